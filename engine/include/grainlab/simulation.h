@@ -1,0 +1,148 @@
+#pragma once
+// The time-stepping engine: grains in a deforming periodic cell (SPEC §3). Owns the grain state
+// (structure of arrays), the neighbour list with the persistent contact history, the cell and
+// its servo. Synchronous: step() runs on the caller's thread (a worker thread in the GUI, the
+// main thread headless) and uses OpenMP inside; results are bit-identical for any thread count
+// because forces are computed per pair, then gathered per grain in a fixed order, and every sum
+// is taken over fixed blocks in a fixed order. Not thread-safe: one thread drives it.
+
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "grainlab/contact_network.h"
+#include "grainlab/periodic_cell.h"
+#include "grainlab/simulation_state.h"
+
+namespace grainlab {
+
+/// A run stopped for a physical reason (blow-up). Names the grain, the step and the cause.
+class SimulationError : public std::runtime_error {
+public:
+    SimulationError(std::int64_t step, std::int32_t grain, std::string cause);
+    std::int64_t step;  ///< the step at which the failure was detected
+    std::int32_t grain; ///< the grain at fault (-1 if none in particular)
+    std::string cause;
+};
+
+/// The critical time step estimate (SPEC §3.7) for a shape table and parameters.
+struct TimeStepLimit {
+    double translational = 0; ///< 2 sqrt(m_min / k_eff) [s]
+    double rotational = 0;    ///< 2 sqrt(I_min / K_theta) [s]
+    double limit = 0;         ///< the smaller of the two [s]
+    int stiffestShape = 0;    ///< shape index that sets the limit
+};
+TimeStepLimit criticalTimeStep(const std::vector<OvalShape>& shapes,
+                               const SimulationParameters& parameters);
+
+/// Refuses a time step above the stable limit (throws std::invalid_argument naming the limit);
+/// returns a warning text when it is within 20 % of it, an empty string otherwise.
+std::string checkTimeStep(const std::vector<OvalShape>& shapes,
+                          const SimulationParameters& parameters);
+
+/// Symmetric Love-Weber stress, compression positive [Pa].
+struct Stress {
+    double s11 = 0, s22 = 0, s12 = 0;
+};
+
+struct Energies {
+    double kinetic = 0;        ///< fluctuating translational + rotational [J]
+    double elastic = 0;        ///< spring energy of the contacts [J]
+    double boundaryWork = 0;   ///< work done by the cell on the assembly [J]
+    double frictionWork = 0;   ///< cumulative sliding dissipation [J]
+    double dampingWork = 0;    ///< cumulative damping dissipation [J]
+};
+
+class Simulation {
+public:
+    /// Takes ownership of a complete state. Refuses an unstable time step, a cell narrower than
+    /// two largest grains, and inconsistent arrays (std::invalid_argument). If the state has no
+    /// neighbour list yet, builds one.
+    explicit Simulation(SimulationState state);
+
+    /// Advances one time step. Throws SimulationError on blow-up; the state is then the state
+    /// of the failed step and must not be checkpointed.
+    void step();
+    /// Advances `steps` time steps.
+    void advance(std::int64_t steps);
+
+    /// Changes how an axis is driven, between steps. Resets that axis's servo integral when the
+    /// mode or target changes.
+    void setAxisControl(int axis, const AxisControl& control);
+    void setFriction(double friction);
+    void setDamping(const DampingParameters& damping);
+    void setThreads(int threads);
+    /// Zeroes all fluctuating velocities and spins (e.g. between stages).
+    void clearVelocities();
+
+    /// A copy of the full state: a complete checkpoint.
+    SimulationState state() const;
+    const SimulationState& stateRef() const { return s_; }
+
+    std::int64_t stepCount() const { return s_.step; }
+    double time() const { return s_.time; }
+    std::size_t grainCount() const { return s_.grains.size(); }
+    /// The cell matrix h, column-major [m].
+    const std::array<double, 4>& cell() const { return s_.cell; }
+    double cellArea() const;
+    /// Love-Weber stress of the current configuration (symmetric part, compression positive).
+    Stress stress() const { return stress_; }
+    /// Affine stiffness estimates E_11, E_22 used by the servo [Pa].
+    std::array<double, 2> servoStiffness() const { return stiffness_; }
+    /// Touching contacts and grain data for the measures (computed on demand).
+    ContactNetwork contactNetwork() const;
+    Energies energies() const;
+    std::size_t neighbourPairCount() const { return s_.pairs.size(); }
+    std::size_t contactCount() const;
+    std::int64_t neighbourRebuilds() const { return rebuilds_; }
+    /// Grain masses and moments of inertia [kg], [kg m^2].
+    const std::vector<double>& grainMass() const { return mass_; }
+    const std::vector<double>& grainInertia() const { return inertia_; }
+    /// Maximal overlap over touching pairs [m].
+    double maxOverlap() const;
+
+private:
+    void derive();
+    void rebuildNeighbours();
+    bool neighboursStale() const;
+    void evaluateForces(bool incrementTangential);
+    void integrate();
+    void updateServo();
+    void buildPairIndex();
+    void checkOverlaps() const;
+    template <bool Disk, bool Frictional, bool Increment>
+    void pairForces();
+    void gatherForces();
+    void refuseNarrowCell() const;
+
+    static constexpr int kBlockSumWidth = 7; ///< per block: 4 stress, 2 stiffness, slip work
+
+    SimulationState s_;
+    // Derived per grain (rebuilt by derive()).
+    std::vector<double> mass_, inertia_, invMass_, invInertia_;
+    std::vector<double> halfWidth_, halfHeight_;
+    std::vector<double> dampTrans_, dampRot_;
+    std::vector<double> cosTheta_, sinTheta_;
+    std::vector<double> force1_, force2_, torque_;
+    // Derived per pair.
+    std::vector<double> pairForce1_, pairForce2_, torqueFirst_, torqueSecond_, normalForce_;
+    std::vector<double> slipWork_;
+    std::vector<std::int32_t> grainPairStart_, grainPairs_;  ///< CSR: 2*pair + (1 if second)
+    std::vector<double> blockSums_, grainBlockSums_;
+    bool allDisks_ = true;
+    double maxHalfWidth_ = 0;
+    double skin_ = 0;          ///< requested Verlet skin [m]
+    double skinInUse_ = 0;     ///< skin of the current list (smaller in a narrow cell) [m]
+    double maxDrift_ = 0;      ///< largest non-affine displacement since the rebuild [m]
+    double maxOverlapRatio_ = 0; ///< largest overlap / smaller width at the last evaluation
+    Stress stress_;
+    std::array<double, 2> stiffness_{};
+    std::int64_t rebuilds_ = 0;
+};
+
+/// Block size of every deterministic reduction (pairs or grains per block).
+inline constexpr int kReductionBlock = 512;
+
+} // namespace grainlab
