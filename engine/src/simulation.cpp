@@ -162,6 +162,7 @@ void Simulation::derive() {
     for (const OvalShape& s : s_.shapes) {
         allDisks_ = allDisks_ && s.isDisk;
     }
+    allDisks_ = allDisks_ && !p.ovalPathForDisks;
     for (std::size_t i = 0; i < n; ++i) {
         const OvalShape& s = s_.shapes[s_.grains.shape[i]];
         mass_[i] = p.density * s.area;

@@ -60,6 +60,7 @@ struct SimulationParameters {
     double neighbourSkin = 0;          ///< Verlet skin [m]; 0 picks 0.1 * smallest width
     int threads = 1;                   ///< OpenMP threads (results are bit-identical for any)
     bool allArcPairs = false;          ///< use the 16-pair reference oval test (tests only)
+    bool ovalPathForDisks = false;     ///< run disks through the oval kernel (tests only)
 };
 
 /// Grain state, structure of arrays. Index = grain id. x1 is the axial direction.

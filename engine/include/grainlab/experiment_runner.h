@@ -1,0 +1,75 @@
+#pragma once
+// Runs an experiment's stages (SPEC §1): generation, isotropic compaction to each confining
+// pressure (saving a sample at each), then for each sample: friction on, re-equilibration and
+// drained biaxial shear, each shear a separate test with its own series. Records the measures,
+// writes checkpoints and outputs through an optional RunOutput, and builds snapshots.
+//
+// Synchronous: advance() runs on the caller's thread (the GUI's worker thread, or the main
+// thread headless). snapshot() returns an immutable object that any thread may read.
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grainlab/experiment.h"
+#include "grainlab/series.h"
+#include "grainlab/simulation.h"
+#include "grainlab/snapshot.h"
+
+namespace grainlab {
+
+/// Where a run is: which stage of which test.
+struct RunProgress {
+    std::string stage;           ///< e.g. "compaction 15 kPa", "equilibration 100 kPa", "shear 100 kPa"
+    std::string test;            ///< series the current records go to, e.g. "p100kPa"
+    double axialStrain = 0;      ///< eps1 of the current test [-]
+    double fraction = 0;         ///< of the whole experiment, estimated [0, 1]
+    std::int64_t step = 0;       ///< steps of the current simulation
+    bool finished = false;
+};
+
+/// Receives what a run produces (implemented by the run file / CSV writers, or by tests).
+class RunOutput {
+public:
+    virtual ~RunOutput() = default;
+    /// A new record (row) of test `series.test`; `series` holds all rows so far.
+    virtual void record(const SeriesTable& series) = 0;
+    /// A complete checkpoint: continuing from it gives the same numbers.
+    virtual void checkpoint(const std::string& name, const SimulationState& state,
+                            const std::string& runnerState) = 0;
+    /// A compacted sample, kept for the shear tests.
+    virtual void sample(double pressure, const SimulationState& state) = 0;
+};
+
+class ExperimentRunner {
+public:
+    explicit ExperimentRunner(ExperimentConfig config, RunOutput* output = nullptr);
+    /// Continues from a checkpoint written by a previous run of the same experiment.
+    ExperimentRunner(ExperimentConfig config, const SimulationState& checkpoint,
+                     const std::string& runnerState, RunOutput* output = nullptr);
+    ~ExperimentRunner();
+
+    /// Advances by at most `maxSteps` steps; returns false once the experiment is finished.
+    /// Throws SimulationError (blow-up) or std::runtime_error (a stage that cannot finish).
+    bool advance(std::int64_t maxSteps);
+    bool finished() const;
+    RunProgress progress() const;
+    const ExperimentConfig& config() const;
+    /// The simulation of the current stage (valid until the next advance()).
+    const Simulation& simulation() const;
+    /// Every test's series so far.
+    const std::vector<SeriesTable>& series() const;
+    /// Builds an immutable snapshot of now (measures computed here, not per step).
+    SnapshotPtr snapshot() const;
+    /// Writes a checkpoint of now through the output (e.g. on Ctrl-C).
+    void checkpointNow(const std::string& name);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace grainlab

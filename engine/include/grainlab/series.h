@@ -1,0 +1,47 @@
+#pragma once
+// A recorded time series: named columns with units, one row per record, plus the text column
+// `stage`. Filled by the experiment runner on the engine thread; copied into snapshots for the
+// GUI and written to CSV and to the run file. Plain data.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace grainlab {
+
+struct SeriesColumn {
+    std::string name; ///< e.g. "sigma22"
+    std::string unit; ///< e.g. "Pa"; "-" for dimensionless
+};
+
+struct SeriesTable {
+    std::string test;                          ///< e.g. "p100kPa"
+    std::vector<SeriesColumn> columns;         ///< numeric columns, in order
+    std::vector<std::vector<double>> rows;     ///< rows[k][c] is column c of record k
+    std::vector<std::string> stages;           ///< stage name of record k
+
+    /// Index of the column `name`, or -1.
+    int column(const std::string& name) const {
+        for (std::size_t c = 0; c < columns.size(); ++c) {
+            if (columns[c].name == name) {
+                return static_cast<int>(c);
+            }
+        }
+        return -1;
+    }
+    /// All values of column `name` (empty if absent).
+    std::vector<double> values(const std::string& name) const {
+        const int c = column(name);
+        std::vector<double> out;
+        if (c < 0) {
+            return out;
+        }
+        out.reserve(rows.size());
+        for (const auto& r : rows) {
+            out.push_back(r[c]);
+        }
+        return out;
+    }
+};
+
+} // namespace grainlab

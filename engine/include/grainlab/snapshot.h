@@ -1,0 +1,51 @@
+#pragma once
+// An immutable picture of a run at one instant, published by the engine's worker thread at most
+// every ~16 ms as std::shared_ptr<const Snapshot> and drawn by the GUI thread. Nothing in it
+// is modified after publication, so it may be read from any thread without locking.
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "grainlab/contact_network.h"
+#include "grainlab/oval_shape.h"
+#include "grainlab/series.h"
+
+namespace grainlab {
+
+/// One void cell as drawn and inspected (see void_cells.h for the definitions).
+struct VoidCellView {
+    std::vector<std::int32_t> grains;   ///< grains around the cell, in order
+    std::vector<double> x1, x2;         ///< polygon vertices, absolute, may leave the cell [m]
+    double area = 0;                    ///< [m^2]
+    double elongation = 1;              ///< principal-axis ratio >= 1 [-]
+    double direction = 0;               ///< major-axis angle from x1 [rad]
+    double centroid1 = 0, centroid2 = 0; ///< wrapped into the cell [m]
+    int valence = 0;                    ///< number of sides (grains)
+};
+
+struct Snapshot {
+    std::int64_t step = 0;
+    double time = 0;                       ///< [s]
+    std::string stage;                     ///< e.g. "compaction 15 kPa", "shear 100 kPa"
+    std::string test;                      ///< the test the series belongs to
+    double axialStrain = 0;                ///< eps1 [-]
+    double progress = 0;                   ///< fraction of the whole experiment done [0, 1]
+    double stepsPerSecond = 0;             ///< measured engine speed
+    double etaSeconds = -1;                ///< estimated time left, -1 if unknown
+
+    std::vector<OvalShape> shapes;
+    std::vector<std::int32_t> shape;       ///< per grain: index into shapes
+    std::vector<double> x1, x2, theta;     ///< centres wrapped into the cell [m], orientation [rad]
+    std::vector<double> rotation;          ///< rotation since the start of the test [rad]
+    ContactNetwork network;                ///< touching contacts (cell, centres, forces)
+    std::vector<std::uint8_t> loadBearing; ///< per grain: 1 if in the load-bearing graph
+    std::vector<VoidCellView> voidCells;
+    std::vector<SeriesTable> series;       ///< every test's series so far (the live one last)
+};
+
+using SnapshotPtr = std::shared_ptr<const Snapshot>;
+
+} // namespace grainlab

@@ -1,0 +1,242 @@
+// Contact detection against brute force (SPEC §3.2): the arc-pair rule with the minimum
+// overlap must agree with a separating-axis computation on fine polygons, and the fast 4-pair
+// form with the 16-pair reference.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "grainlab/contact_geometry.h"
+#include "grainlab/random.h"
+
+namespace grainlab {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+/// The oval outline as a polygon of `vertices` points (body frame), vertices at evenly spaced
+/// outward-normal angles so that the polygon hugs the tight end arcs as well as the sides.
+std::vector<std::array<double, 2>> outline(const OvalShape& s, int vertices) {
+    std::vector<std::array<double, 2>> p(vertices);
+    for (int k = 0; k < vertices; ++k) {
+        p[k] = s.boundaryPoint(2.0 * kPi * k / vertices);
+    }
+    return p;
+}
+
+/// Support of a polygon placed at (x, y) with orientation theta, in world direction d.
+double support(const std::vector<std::array<double, 2>>& poly, double x, double y, double theta,
+               double d1, double d2) {
+    const double c = std::cos(theta), s = std::sin(theta);
+    // Rotate d into the body frame once, then a max over the body-frame vertices.
+    const double b1 = c * d1 + s * d2, b2 = -s * d1 + c * d2;
+    double best = -1e300;
+    for (const auto& v : poly) {
+        best = std::max(best, v[0] * b1 + v[1] * b2);
+    }
+    return best + x * d1 + y * d2;
+}
+
+struct BruteContact {
+    double overlap, angle;
+};
+
+/// Penetration depth by the separating-axis theorem: min over directions d of
+/// h_A(d) + h_B(-d) - d . (x_B - x_A); the minimising d is the contact normal.
+BruteContact bruteForce(const OvalShape& A, double thetaA, const OvalShape& B, double thetaB,
+                        double dx, double dy) {
+    const auto coarseA = outline(A, 1024), coarseB = outline(B, 1024);
+    const auto fineA = outline(A, 16384), fineB = outline(B, 16384);
+    // B's support already contains its offset, so the overlap along d is h_A(d) + h_B(-d).
+    auto overlapAt = [&](const auto& pa, const auto& pb, double angle) {
+        const double d1 = std::cos(angle), d2 = std::sin(angle);
+        return support(pa, 0, 0, thetaA, d1, d2) + support(pb, dx, dy, thetaB, -d1, -d2);
+    };
+    const int samples = 720;
+    std::vector<double> value(samples);
+    for (int k = 0; k < samples; ++k) {
+        value[k] = overlapAt(coarseA, coarseB, 2 * kPi * k / samples);
+    }
+    // Refine the three smallest local minima with the fine polygons (golden section).
+    std::vector<int> minima;
+    for (int k = 0; k < samples; ++k) {
+        if (value[k] <= value[(k + 1) % samples] && value[k] <= value[(k + samples - 1) % samples]) {
+            minima.push_back(k);
+        }
+    }
+    std::sort(minima.begin(), minima.end(), [&](int a, int b) { return value[a] < value[b]; });
+    minima.resize(std::min<std::size_t>(3, minima.size()));
+    BruteContact best{1e300, 0};
+    for (int k : minima) {
+        // The coarse polygons are good to ~1e-8 m: bracket generously around each minimum.
+        double lo = 2 * kPi * (k - 8) / samples, hi = 2 * kPi * (k + 8) / samples;
+        const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+        double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
+        double fa = overlapAt(fineA, fineB, a), fb = overlapAt(fineA, fineB, b);
+        for (int it = 0; it < 70; ++it) {
+            if (fa < fb) {
+                hi = b;
+                b = a;
+                fb = fa;
+                a = hi - g * (hi - lo);
+                fa = overlapAt(fineA, fineB, a);
+            } else {
+                lo = a;
+                a = b;
+                fa = fb;
+                b = lo + g * (hi - lo);
+                fb = overlapAt(fineA, fineB, b);
+            }
+        }
+        const double angle = 0.5 * (lo + hi);
+        const double v = overlapAt(fineA, fineB, angle);
+        if (v < best.overlap) {
+            best = {v, angle};
+        }
+    }
+    return best;
+}
+
+struct RandomPair {
+    OvalShape A, B;
+    double thetaA, thetaB, dx, dy;
+};
+
+/// Two random ovals whose bounding circles overlap, at overlaps up to ~0.1 W.
+RandomPair randomPair(Random& random, double aspect) {
+    RandomPair p{makeOval(random.uniform(1e-3, 2e-3), aspect),
+                 makeOval(random.uniform(1e-3, 2e-3), aspect),
+                 random.uniform(-kPi, kPi),
+                 random.uniform(-kPi, kPi),
+                 0,
+                 0};
+    const double direction = random.uniform(0, 2 * kPi);
+    const double reach = p.A.halfHeight + p.B.halfHeight +
+                         random.uniform(-0.15, 1.0) * (p.A.halfWidth + p.B.halfWidth -
+                                                       p.A.halfHeight - p.B.halfHeight);
+    p.dx = reach * std::cos(direction);
+    p.dy = reach * std::sin(direction);
+    return p;
+}
+
+TEST(ContactGeometry, ArcRuleMatchesSeparatingAxisBruteForce) {
+    Random random(7);
+    int touching = 0;
+    for (int trial = 0; trial < 1500; ++trial) {
+        const double aspect = trial % 3 == 0 ? 0.35 : 0.6;
+        const RandomPair p = randomPair(random, aspect);
+        const ContactGeometry g =
+            ovalContactAllPairs(p.A, p.thetaA, p.B, p.thetaB, p.dx, p.dy);
+        const BruteContact b = bruteForce(p.A, p.thetaA, p.B, p.thetaB, p.dx, p.dy);
+        const double scale = std::min(p.A.width, p.B.width);
+        // The inscribed polygons under-estimate each support by < 2e-8 W.
+        ASSERT_NEAR(g.overlap, b.overlap, 1e-7 * scale) << "trial " << trial;
+        if (b.overlap > 1e-4 * scale) {
+            ++touching;
+            const double angle = std::atan2(g.normalY, g.normalX);
+            const double diff = std::remainder(angle - b.angle, 2 * kPi);
+            ASSERT_LT(std::fabs(diff), 2e-3) << "trial " << trial;
+            // Contact point: mid-way between the support points of A along n and B along -n.
+            const auto pa = p.A.boundaryPoint(std::atan2(-std::sin(p.thetaA) * g.normalX +
+                                                             std::cos(p.thetaA) * g.normalY,
+                                                         std::cos(p.thetaA) * g.normalX +
+                                                             std::sin(p.thetaA) * g.normalY));
+            const double ax = std::cos(p.thetaA) * pa[0] - std::sin(p.thetaA) * pa[1];
+            const double ay = std::sin(p.thetaA) * pa[0] + std::cos(p.thetaA) * pa[1];
+            const auto pb = p.B.boundaryPoint(std::atan2(std::sin(p.thetaB) * g.normalX -
+                                                             std::cos(p.thetaB) * g.normalY,
+                                                         -std::cos(p.thetaB) * g.normalX -
+                                                             std::sin(p.thetaB) * g.normalY));
+            const double bx = p.dx + std::cos(p.thetaB) * pb[0] - std::sin(p.thetaB) * pb[1];
+            const double by = p.dy + std::sin(p.thetaB) * pb[0] + std::cos(p.thetaB) * pb[1];
+            ASSERT_NEAR(g.pointX, 0.5 * (ax + bx), 1e-9 * 1e3 * scale) << "trial " << trial;
+            ASSERT_NEAR(g.pointY, 0.5 * (ay + by), 1e-9 * 1e3 * scale) << "trial " << trial;
+        }
+    }
+    EXPECT_GT(touching, 600); // the sample really tests contacts, not only separated pairs
+}
+
+TEST(ContactGeometry, FourPairFormEqualsSixteenPairReference) {
+    Random random(11);
+    int touching = 0;
+    for (int trial = 0; trial < 200000; ++trial) {
+        const RandomPair p = randomPair(random, trial % 2 ? 0.6 : 0.4);
+        const ContactGeometry ref =
+            ovalContactAllPairs(p.A, p.thetaA, p.B, p.thetaB, p.dx, p.dy);
+        const ContactGeometry fast =
+            ovalContact(p.A, std::cos(p.thetaA), std::sin(p.thetaA), p.B, std::cos(p.thetaB),
+                        std::sin(p.thetaB), p.dx, p.dy);
+        if (ref.overlap > 0.0) {
+            ++touching;
+        }
+        if (ref.overlap > 0.0 || fast.overlap > 0.0) {
+            ASSERT_NEAR(fast.overlap, ref.overlap, 1e-15) << "trial " << trial;
+            ASSERT_NEAR(fast.normalX, ref.normalX, 1e-12) << "trial " << trial;
+            ASSERT_NEAR(fast.normalY, ref.normalY, 1e-12) << "trial " << trial;
+        }
+    }
+    EXPECT_GT(touching, 50000);
+}
+
+TEST(ContactGeometry, JunctionDirectionsAreAdmittedByBothArcs) {
+    // Two ovals placed so that the line of centres passes exactly through A's junction normal.
+    const OvalShape s = makeOval(1e-3, 0.6);
+    const double phi = s.junctionAngle;
+    const auto pa = s.boundaryPoint(phi);
+    // B a disk touching A at its junction point, along the junction normal.
+    const OvalShape disk = makeOval(1e-3, 1.0);
+    const double gap = -2e-6; // overlap 2 micrometre
+    const double dx = pa[0] + (disk.halfWidth + gap) * std::cos(phi);
+    const double dy = pa[1] + (disk.halfWidth + gap) * std::sin(phi);
+    const ContactGeometry g = ovalContactAllPairs(s, 0.0, disk, 0.0, dx, dy);
+    EXPECT_NEAR(g.overlap, -gap, 1e-12);
+    EXPECT_NEAR(std::atan2(g.normalY, g.normalX), phi, 1e-6);
+}
+
+TEST(ContactGeometry, FarSideFalseCandidateIsRejected) {
+    // Two parallel ovals stacked along their minor axes, overlapping by s. A's bottom side arc
+    // and B's top side arc (far sides) are admissible too, with an overlap near 1.2 W: taking
+    // any pair but the minimum would create an enormous false force.
+    const OvalShape s = makeOval(1e-3, 0.6);
+    const double overlap = 3e-6;
+    const double dy = s.height - overlap;
+    int admissibleFarSide = 0;
+    {
+        ContactGeometry far;
+        detail::tryArcPair(s, 1.0, 0.0, kBottomSide, s, 1.0, 0.0, kTopSide, 0.0, dy, far);
+        if (far.overlap > 1.0 * s.width) {
+            ++admissibleFarSide;
+        }
+    }
+    ASSERT_EQ(admissibleFarSide, 1) << "the scene must contain the false candidate";
+    const ContactGeometry g = ovalContactAllPairs(s, 0.0, s, 0.0, 0.0, dy);
+    EXPECT_NEAR(g.overlap, overlap, 1e-15);
+    EXPECT_NEAR(g.normalY, 1.0, 1e-15);
+    const ContactGeometry fast = ovalContact(s, 1.0, 0.0, s, 1.0, 0.0, 0.0, dy);
+    EXPECT_NEAR(fast.overlap, overlap, 1e-15);
+}
+
+TEST(ContactGeometry, DiskThroughOvalKernelEqualsDiskKernel) {
+    Random random(3);
+    for (int trial = 0; trial < 10000; ++trial) {
+        const OvalShape a = makeOval(random.uniform(1e-3, 2e-3), 1.0);
+        const OvalShape b = makeOval(random.uniform(1e-3, 2e-3), 1.0);
+        const double angle = random.uniform(-kPi, kPi);
+        const double distance = (a.halfWidth + b.halfWidth) * random.uniform(0.9, 1.01);
+        const double dx = distance * std::cos(angle), dy = distance * std::sin(angle);
+        const double ta = random.uniform(-kPi, kPi), tb = random.uniform(-kPi, kPi);
+        const ContactGeometry disk = diskContact(a.halfWidth, b.halfWidth, dx, dy);
+        const ContactGeometry oval =
+            ovalContact(a, std::cos(ta), std::sin(ta), b, std::cos(tb), std::sin(tb), dx, dy);
+        ASSERT_NEAR(oval.overlap, disk.overlap, 1e-18);
+        ASSERT_NEAR(oval.normalX, disk.normalX, 1e-14);
+        ASSERT_NEAR(oval.pointX, disk.pointX, 1e-18);
+        ASSERT_NEAR(oval.pointY, disk.pointY, 1e-18);
+    }
+}
+
+} // namespace
+} // namespace grainlab

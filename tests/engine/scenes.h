@@ -1,0 +1,71 @@
+#pragma once
+// Small scenes for the engine tests, each built in a few lines.
+
+#include <vector>
+
+#include "grainlab/assembly.h"
+#include "grainlab/simulation.h"
+
+namespace grainlab::test {
+
+/// Parameters for closed-form tests: no damping, no friction unless set.
+inline SimulationParameters bareParameters() {
+    SimulationParameters p;
+    p.damping.kind = DampingKind::None;
+    p.friction = 0.0;
+    return p;
+}
+
+/// A state with the given grains (one shape per grain) in an L1 x L2 rectangular cell.
+struct GrainSpec {
+    double x1, x2, theta, v1, v2, omega;
+    double width, aspect;
+};
+inline SimulationState makeScene(const std::vector<GrainSpec>& grains, double l1, double l2,
+                                 const SimulationParameters& p) {
+    SimulationState s;
+    s.parameters = p;
+    s.cell = {l1, 0.0, 0.0, l2};
+    s.grains.resize(grains.size());
+    for (std::size_t i = 0; i < grains.size(); ++i) {
+        const GrainSpec& g = grains[i];
+        s.shapes.push_back(makeOval(g.width, g.aspect));
+        s.grains.x1[i] = g.x1;
+        s.grains.x2[i] = g.x2;
+        s.grains.theta[i] = g.theta;
+        s.grains.v1[i] = g.v1;
+        s.grains.v2[i] = g.v2;
+        s.grains.omega[i] = g.omega;
+        s.grains.shape[i] = static_cast<std::int32_t>(i);
+    }
+    return s;
+}
+
+/// A small random loose assembly (grid, 1-2 mm, given aspect ratio).
+inline SimulationState smallAssembly(int count, double aspect, std::uint64_t seed,
+                                     const SimulationParameters& p, double gap = 0.02) {
+    AssemblySpec spec;
+    spec.gap = gap;
+    spec.grainCount = count;
+    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 11);
+    spec.aspectRatio = aspect;
+    spec.seed = seed;
+    return generateGridAssembly(spec, p);
+}
+
+/// Compacts `state` isotropically to `pressure` [Pa] with the servo for `steps` steps.
+inline Simulation compacted(SimulationState state, double pressure, std::int64_t steps) {
+    state.parameters.servo.maxStrainRate = 40.0;
+    Simulation sim(std::move(state));
+    const AxisControl servo{AxisMode::Stress, 0.0, pressure};
+    sim.setAxisControl(0, servo);
+    sim.setAxisControl(1, servo);
+    sim.advance(steps);
+    return sim;
+}
+
+/// A dense frictionless-compacted assembly at 100 kPa (computed once per aspect ratio and
+/// test binary): `count` grains, velocities cleared.
+SimulationState denseAssembly(int count, double aspect);
+
+} // namespace grainlab::test

@@ -1,0 +1,351 @@
+// The engine as a whole (SPEC §3.4-§3.8): periodic cell, Love-Weber stress, servo, stability,
+// determinism, restart, neighbour lists, and the disk and frictionless fast paths.
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <set>
+#include <tuple>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "grainlab/contact_geometry.h"
+#include "grainlab/periodic_cell.h"
+#include "scenes.h"
+
+namespace grainlab {
+namespace {
+
+using test::bareParameters;
+using test::compacted;
+using test::makeScene;
+using test::smallAssembly;
+
+/// Bitwise equality of two doubles vectors.
+template <typename T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+bool sameState(const SimulationState& a, const SimulationState& b) {
+    return sameBits(a.grains.x1, b.grains.x1) && sameBits(a.grains.x2, b.grains.x2) &&
+           sameBits(a.grains.theta, b.grains.theta) && sameBits(a.grains.v1, b.grains.v1) &&
+           sameBits(a.grains.v2, b.grains.v2) && sameBits(a.grains.omega, b.grains.omega) &&
+           sameBits(a.pairs.tangentialForce, b.pairs.tangentialForce) &&
+           sameBits(a.pairs.first, b.pairs.first) && sameBits(a.pairs.second, b.pairs.second) &&
+           std::memcmp(a.cell.data(), b.cell.data(), sizeof(a.cell)) == 0 &&
+           a.frictionWork == b.frictionWork && a.dampingWork == b.dampingWork &&
+           a.boundaryWork == b.boundaryWork;
+}
+
+TEST(PeriodicCell, GrainAcrossTheBoundaryTouchesThroughItsImage) {
+    const double d = 1e-3, l = 5e-3;
+    // Grain 0 near the top of the cell along x1, grain 1 near the bottom: they overlap through
+    // the boundary by 1 micrometre.
+    Simulation sim(makeScene({{l - 0.5 * d + 0.5e-6, 2e-3, 0, 0, 0, 0, d, 1.0},
+                              {0.5 * d - 0.5e-6 + 0.0, 2e-3, 0, 0, 0, 0, d, 1.0}},
+                             l, l, bareParameters()));
+    const ContactNetwork net = sim.contactNetwork();
+    ASSERT_EQ(net.contacts.size(), 1u);
+    const ContactRecord& c = net.contacts[0];
+    EXPECT_NEAR(c.overlap, 1e-6, 1e-15);
+    EXPECT_EQ(std::abs(c.shift1), 1);
+    EXPECT_EQ(c.shift2, 0);
+    // Grain 0 lies just below the image of grain 1 (one cell up): the contact pushes grain 0
+    // down (-x1) and grain 1 up, apart across the boundary.
+    EXPECT_LT(net.netForce1[0], 0.0);
+    EXPECT_GT(net.netForce1[1], 0.0);
+    EXPECT_NEAR(net.netForce1[0], -1e8 * 1e-6, 1e-6);
+}
+
+TEST(PeriodicCell, ContactHistorySurvivesWrapsAndRebuilds) {
+    // A frictional dense assembly sheared while drifting along x2, so grains cross the boundary.
+    // With a tiny skin the list is rebuilt (and positions wrapped) many times; with a huge skin
+    // never. If history were lost at a wrap, the two runs would part macroscopically.
+    SimulationState start = test::denseAssembly(300, 0.6);
+    start.parameters.friction = 0.5;
+    for (double& v : start.grains.v2) {
+        v = 2.0;
+    }
+    SimulationState small = start, huge = start;
+    small.parameters.neighbourSkin = 1e-5;
+    huge.parameters.neighbourSkin = 0.015;
+    small.pairs = {};
+    huge.pairs = {};
+    small.reference1.clear();
+    huge.reference1.clear();
+    Simulation a(std::move(small)), b(std::move(huge));
+    for (Simulation* sim : {&a, &b}) {
+        sim->setAxisControl(0, {AxisMode::Strain, 1.0, 0});
+        sim->setAxisControl(1, {AxisMode::Stress, 0, 1e5});
+        sim->advance(3000);
+    }
+    EXPECT_GT(a.neighbourRebuilds(), 20);
+    EXPECT_EQ(b.neighbourRebuilds(), 1); // the initial build only
+    const ContactNetwork na = a.contactNetwork(), nb = b.contactNetwork();
+    ASSERT_EQ(na.contacts.size(), nb.contacts.size());
+    double sumA = 0, sumB = 0;
+    int sliding = 0;
+    for (std::size_t c = 0; c < na.contacts.size(); ++c) {
+        ASSERT_EQ(na.contacts[c].first, nb.contacts[c].first);
+        ASSERT_EQ(na.contacts[c].second, nb.contacts[c].second);
+        EXPECT_NEAR(na.contacts[c].tangentialForce, nb.contacts[c].tangentialForce,
+                    1e-6 * na.contacts[c].normalForce);
+        sumA += std::fabs(na.contacts[c].tangentialForce);
+        sumB += std::fabs(nb.contacts[c].tangentialForce);
+        sliding += na.contacts[c].sliding;
+    }
+    EXPECT_GT(sumA, 0.0);
+    EXPECT_NEAR(sumA, sumB, 1e-8 * sumA);
+    // The drift carried grains across x2 = L2 (6 mm of 3.6 cm).
+    EXPECT_NEAR(a.stress().s11, b.stress().s11, 1e-8 * a.stress().s11);
+}
+
+TEST(PeriodicCell, AffineDeformationWithoutContactsLeavesFluctuationsAtZero) {
+    auto p = bareParameters();
+    p.damping = {DampingKind::GlobalViscous, 0.05};
+    SimulationState s = smallAssembly(60, 0.6, 5, p, 0.5);
+    const double l1 = s.cell[0], l2 = s.cell[3];
+    Simulation sim(std::move(s));
+    sim.setAxisControl(0, {AxisMode::Strain, 0.5, 0});
+    sim.setAxisControl(1, {AxisMode::Strain, -0.3, 0});
+    sim.advance(3000);
+    ASSERT_EQ(sim.contactCount(), 0u);
+    const auto& g = sim.stateRef().grains;
+    const auto& h = sim.cell();
+    const auto& h0 = sim.stateRef().referenceCell;
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        ASSERT_EQ(g.v1[i], 0.0);
+        ASSERT_EQ(g.v2[i], 0.0);
+        ASSERT_EQ(g.omega[i], 0.0);
+        // Positions follow the cell: fractional coordinates are unchanged.
+        const auto sNow = toFractional(h, g.x1[i], g.x2[i]);
+        const auto sRef = toFractional(h0, sim.stateRef().reference1[i],
+                                       sim.stateRef().reference2[i]);
+        EXPECT_NEAR(sNow[0], sRef[0], 1e-12);
+        EXPECT_NEAR(sNow[1], sRef[1], 1e-12);
+    }
+    // Cell lengths: h <- (I + L dt) h each step.
+    EXPECT_NEAR(h[0], l1 * std::pow(1.0 - 0.5e-6, 3000), 1e-12 * l1);
+    EXPECT_NEAR(h[3], l2 * std::pow(1.0 + 0.3e-6, 3000), 1e-12 * l2);
+    EXPECT_LT(h[0], l1);
+    EXPECT_GT(h[3], l2);
+}
+
+TEST(Stress, LoveWeberOfAStaticConfigurationMatchesHandComputation) {
+    // Three disks in a cell with two contacts along known directions (frictionless, static).
+    const double d = 1e-3, l1 = 8e-3, l2 = 6e-3;
+    const double delta = 2e-6;
+    const double c = std::cos(0.3), s = std::sin(0.3);
+    const double reach = d - delta;
+    SimulationState state = makeScene({{3e-3, 3e-3, 0, 0, 0, 0, d, 1.0},
+                                       {3e-3 + reach * c, 3e-3 + reach * s, 0, 0, 0, 0, d, 1.0},
+                                       {3e-3 - reach, 3e-3, 0, 0, 0, 0, d, 1.0}},
+                                      l1, l2, bareParameters());
+    Simulation sim(std::move(state));
+    ASSERT_EQ(sim.contactCount(), 2u);
+    // Each contact: f = k_n delta along l, |l| = reach: f_i l_j = k_n delta reach n_i n_j.
+    const double f = 1e8 * delta * reach;
+    const double area = l1 * l2;
+    const double s11 = f * (c * c + 1.0) / area;
+    const double s22 = f * (s * s) / area;
+    const double s12 = f * (c * s) / area;
+    EXPECT_NEAR(sim.stress().s11, s11, 1e-9 * s11);
+    EXPECT_NEAR(sim.stress().s22, s22, 1e-9 * s11);
+    EXPECT_NEAR(sim.stress().s12, s12, 1e-9 * s11);
+    EXPECT_GT(sim.stress().s11, 0.0); // compression positive
+}
+
+TEST(Servo, SmallDenseAssemblyReachesIsotropicTarget) {
+    for (double aspect : {1.0, 0.6}) {
+        auto p = SimulationParameters{};
+        p.friction = 0.0;
+        Simulation sim = compacted(smallAssembly(300, aspect, 21, p), 5e4, 60000);
+        const Stress s = sim.stress();
+        EXPECT_NEAR(s.s11, 5e4, 0.005 * 5e4) << "aspect " << aspect;
+        EXPECT_NEAR(s.s22, 5e4, 0.005 * 5e4) << "aspect " << aspect;
+        EXPECT_GT(2.0 * sim.contactCount() / double(sim.grainCount()), 3.0);
+    }
+}
+
+TEST(Stability, ReferenceTimeStepIsAcceptedAndUnstableOnesRefused) {
+    std::vector<OvalShape> shapes;
+    for (double w = 1e-3; w <= 2.0001e-3; w += 1e-4) {
+        shapes.push_back(makeOval(w, 0.6));
+    }
+    SimulationParameters p; // reference: 1e-6 s, k = 1e8 N/m
+    const TimeStepLimit lim = criticalTimeStep(shapes, p);
+    EXPECT_GT(lim.limit, 1.25e-6);
+    EXPECT_LT(lim.limit, 2.5e-6);
+    EXPECT_EQ(checkTimeStep(shapes, p), "");
+    p.timeStep = 1.1 * lim.limit;
+    try {
+        checkTimeStep(shapes, p);
+        FAIL() << "unstable step accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("stable limit"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(fmt::format("{:.4g}", lim.limit)), std::string::npos)
+            << e.what();
+    }
+    p.timeStep = 0.9 * lim.limit;
+    EXPECT_NE(checkTimeStep(shapes, p).find("within 20 %"), std::string::npos);
+    // A Simulation refuses it too.
+    SimulationParameters bad;
+    bad.timeStep = 1e-5;
+    EXPECT_THROW(Simulation(smallAssembly(20, 0.6, 1, bad)), std::invalid_argument);
+}
+
+TEST(Stability, ExplodingSceneStopsWithGrainStepAndCause) {
+    // Grains pushed together far beyond any physical overlap.
+    const double d = 1e-3;
+    Simulation sim(makeScene({{5e-3, 5e-3, 0, 0, 0, 0, d, 1.0},
+                              {5e-3, 5e-3 + 0.7 * d, 0, 0, 0, 0, d, 1.0}},
+                             1e-2, 1e-2, bareParameters()));
+    try {
+        sim.step();
+        FAIL() << "no error";
+    } catch (const SimulationError& e) {
+        EXPECT_EQ(e.step, 1);
+        EXPECT_EQ(e.grain, 0);
+        EXPECT_NE(e.cause.find("overlap"), std::string::npos) << e.what();
+    }
+    // A grain flying through several radii per step: runaway motion.
+    Simulation fast(makeScene({{5e-3, 5e-3, 0, 0, 1e3, 0, d, 1.0}}, 1e-2, 1e-2,
+                              bareParameters()));
+    try {
+        fast.step();
+        FAIL() << "no error";
+    } catch (const SimulationError& e) {
+        EXPECT_EQ(e.grain, 0);
+        EXPECT_NE(e.cause.find("runaway"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Stability, CellNarrowerThanTwoGrainsIsRefused) {
+    EXPECT_THROW(Simulation(makeScene({{1e-3, 1e-3, 0, 0, 0, 0, 1e-3, 1.0}}, 1.9e-3, 1e-2,
+                                      bareParameters())),
+                 SimulationError);
+}
+
+TEST(Determinism, OneAndTwoThreadsGiveIdenticalBits) {
+    for (double aspect : {1.0, 0.6}) {
+        // Frictional compaction from loose (contacts forming, rebuilds, servo) and then shear.
+        SimulationParameters p;
+        p.friction = 0.3;
+        SimulationState a = smallAssembly(600, aspect, 3, p), b = a;
+        a.parameters.threads = 1;
+        b.parameters.threads = 2;
+        Simulation one = compacted(std::move(a), 1e5, 15000);
+        Simulation two = compacted(std::move(b), 1e5, 15000);
+        EXPECT_TRUE(sameState(one.state(), two.state())) << "aspect " << aspect;
+        for (Simulation* sim : {&one, &two}) {
+            sim->setAxisControl(0, {AxisMode::Strain, 1.0, 0});
+            sim->setAxisControl(1, {AxisMode::Stress, 0, 1e5});
+            sim->advance(2000);
+        }
+        EXPECT_TRUE(sameState(one.state(), two.state())) << "aspect " << aspect;
+        EXPECT_GT(one.contactCount(), 600u);
+    }
+}
+
+TEST(Restart, ContinuingFromAStateEqualsTheUninterruptedRun) {
+    SimulationState dense = test::denseAssembly(300, 0.6);
+    dense.parameters.friction = 0.5;
+    dense.parameters.neighbourSkin = 5e-5;
+    Simulation a(std::move(dense));
+    a.setAxisControl(0, {AxisMode::Strain, 1.0, 0});
+    a.setAxisControl(1, {AxisMode::Stress, 0, 1e5});
+    a.advance(3000);
+    const SimulationState middle = a.state();
+    a.advance(3000);
+    Simulation b(middle);
+    b.advance(3000);
+    EXPECT_TRUE(sameState(a.state(), b.state()));
+    EXPECT_GT(a.neighbourRebuilds(), 1);
+    EXPECT_GT(a.contactCount(), 300u);
+}
+
+TEST(FastPaths, DiskThroughOvalPathEqualsDiskPath) {
+    SimulationState start = test::denseAssembly(300, 1.0);
+    start.parameters.friction = 0.5;
+    SimulationState viaOval = start;
+    viaOval.parameters.ovalPathForDisks = true;
+    Simulation disk(std::move(start)), oval(std::move(viaOval));
+    for (Simulation* sim : {&disk, &oval}) {
+        sim->setAxisControl(0, {AxisMode::Strain, 1.0, 0});
+        sim->setAxisControl(1, {AxisMode::Stress, 0, 1e5});
+        sim->advance(2000);
+    }
+    const auto& a = disk.stateRef().grains;
+    const auto& b = oval.stateRef().grains;
+    double worst = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        worst = std::max({worst, std::fabs(a.x1[i] - b.x1[i]), std::fabs(a.x2[i] - b.x2[i])});
+    }
+    EXPECT_LT(worst, 1e-15); // round-off on millimetre positions
+    EXPECT_NEAR(disk.stress().s11, oval.stress().s11, 1e-9 * disk.stress().s11);
+    EXPECT_EQ(disk.contactCount(), oval.contactCount());
+    EXPECT_GT(disk.contactCount(), 300u);
+}
+
+TEST(NeighbourList, NeverMissesAContactUnderDeformation) {
+    // All-pairs brute force (every image) against the engine's contacts, during compaction and
+    // shear of small oval assemblies.
+    SimulationState dense = test::denseAssembly(300, 0.6);
+    dense.parameters.friction = 0.3;
+    Simulation sim(std::move(dense));
+    sim.setAxisControl(0, {AxisMode::Strain, 2.0, 0});
+    sim.setAxisControl(1, {AxisMode::Stress, 0, 1e5});
+    int checks = 0;
+    for (int round = 0; round < 20; ++round) {
+        sim.advance(500);
+        const ContactNetwork net = sim.contactNetwork();
+        const auto& st = sim.stateRef();
+        const auto& h = st.cell;
+        std::set<std::tuple<int, int, int, int>> expected, found;
+        for (int i = 0; i < net.grainCount; ++i) {
+            for (int j = i + 1; j < net.grainCount; ++j) {
+                for (int k1 = -1; k1 <= 1; ++k1) {
+                    for (int k2 = -1; k2 <= 1; ++k2) {
+                        const double l1 = net.x1[j] + h[0] * k1 + h[2] * k2 - net.x1[i];
+                        const double l2 = net.x2[j] + h[1] * k1 + h[3] * k2 - net.x2[i];
+                        const auto& A = st.shapes[st.grains.shape[i]];
+                        const auto& B = st.shapes[st.grains.shape[j]];
+                        const ContactGeometry c = ovalContactAllPairs(
+                            A, st.grains.theta[i], B, st.grains.theta[j], l1, l2);
+                        if (c.overlap > 0) {
+                            expected.insert({i, j, k1, k2});
+                        }
+                    }
+                }
+            }
+        }
+        for (const auto& c : net.contacts) {
+            found.insert({c.first, c.second, c.shift1, c.shift2});
+        }
+        EXPECT_EQ(found, expected) << "round " << round;
+        checks += static_cast<int>(expected.size());
+    }
+    EXPECT_GT(checks, 2000);
+    EXPECT_GT(sim.neighbourRebuilds(), 1);
+}
+
+TEST(Energy, BoundaryWorkBalancesStoredAndDissipatedEnergy) {
+    SimulationState dense = test::denseAssembly(300, 0.6);
+    dense.parameters.friction = 0.5;
+    Simulation sim(std::move(dense));
+    const Energies e0 = sim.energies();
+    sim.setAxisControl(0, {AxisMode::Strain, 1.0, 0});
+    sim.setAxisControl(1, {AxisMode::Stress, 0, 1e5});
+    sim.advance(10000);
+    const Energies e = sim.energies();
+    const double input = e.boundaryWork - e0.boundaryWork;
+    const double accounted = (e.kinetic - e0.kinetic) + (e.elastic - e0.elastic) +
+                             (e.frictionWork - e0.frictionWork) + (e.dampingWork - e0.dampingWork);
+    ASSERT_GT(input, 0.0);
+    EXPECT_NEAR(accounted, input, 0.02 * input);
+    EXPECT_GT(e.frictionWork - e0.frictionWork, 0.0);
+}
+
+} // namespace
+} // namespace grainlab
