@@ -11,7 +11,8 @@ namespace grainlab {
 
 struct SeriesColumn {
     std::string name; ///< e.g. "sigma22"
-    std::string unit; ///< e.g. "Pa"; "-" for dimensionless
+    std::string unit; ///< e.g. "Pa"; "-" for dimensionless; the CSV header is "name [unit]"
+    bool text = false; ///< true for `stage` only: not part of a numeric row
 };
 
 struct SeriesTable {
