@@ -511,7 +511,10 @@ void Simulation::updateServo() {
         const AxisControl& control = s_.axes[axis];
         const int diagonal = axis == 0 ? 0 : 3;
         if (control.mode == AxisMode::Strain) {
-            L[diagonal] = -control.strainRate;
+            const double length = s_.cell[diagonal];
+            L[diagonal] = control.referenceLength > 0.0
+                              ? -control.strainRate * control.referenceLength / length
+                              : -control.strainRate;
             continue;
         }
         if (!servoStep) {

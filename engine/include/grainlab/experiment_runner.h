@@ -8,7 +8,7 @@
 // thread headless). snapshot() returns an immutable object that any thread may read.
 
 #include <cstdint>
-#include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -44,12 +44,20 @@ public:
     virtual void sample(double pressure, const SimulationState& state) = 0;
 };
 
+/// What a run needs to continue from a checkpoint (read back from the run file).
+struct ResumePoint {
+    SimulationState state;                 ///< the checkpoint
+    std::string runnerState;               ///< the runner's own state, as checkpoint() wrote it
+    std::map<double, SimulationState> samples; ///< compacted samples by pressure [Pa]
+    std::vector<SeriesTable> series;       ///< the series as recorded up to the checkpoint
+};
+
 class ExperimentRunner {
 public:
     explicit ExperimentRunner(ExperimentConfig config, RunOutput* output = nullptr);
-    /// Continues from a checkpoint written by a previous run of the same experiment.
-    ExperimentRunner(ExperimentConfig config, const SimulationState& checkpoint,
-                     const std::string& runnerState, RunOutput* output = nullptr);
+    /// Continues from a checkpoint written by a previous run of the same experiment. Series
+    /// rows recorded after the checkpoint are dropped (see seriesRowsAtCheckpoint()).
+    ExperimentRunner(ExperimentConfig config, ResumePoint resume, RunOutput* output = nullptr);
     ~ExperimentRunner();
 
     /// Advances by at most `maxSteps` steps; returns false once the experiment is finished.
@@ -66,6 +74,8 @@ public:
     SnapshotPtr snapshot() const;
     /// Writes a checkpoint of now through the output (e.g. on Ctrl-C).
     void checkpointNow(const std::string& name);
+    /// Rows per test in a runner state string: what a resumed run keeps of each series.
+    static std::map<std::string, std::size_t> seriesRowsAtCheckpoint(const std::string& runnerState);
 
 private:
     struct Impl;

@@ -32,6 +32,9 @@ struct AxisControl {
     AxisMode mode = AxisMode::Strain;
     double strainRate = 0;   ///< compressive strain rate, Strain mode [1/s]
     double targetStress = 0; ///< target sigma_ii, Stress mode [Pa]
+    /// Strain mode: 0 makes strainRate the true (logarithmic) rate; a length L0 > 0 makes it
+    /// the engineering rate d(L0 - L)/(L0 dt), i.e. a constant length change per step [m].
+    double referenceLength = 0;
 };
 
 struct ServoParameters {

@@ -1,0 +1,524 @@
+#include "grainlab/experiment_runner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "grainlab/measures.h"
+#include "grainlab/periodic_cell.h"
+
+namespace grainlab {
+namespace {
+
+enum class Phase { Compaction = 0, Equilibration = 1, Shear = 2, Done = 3 };
+
+std::string kiloPascal(double pressure) { return fmt::format("{:g} kPa", pressure / 1000.0); }
+
+/// Test names sort by pressure: p015kPa, p100kPa (p12.5kPa for non-integer kPa).
+std::string testName(double pressure) {
+    const double kpa = pressure / 1000.0;
+    if (kpa == std::round(kpa)) {
+        return fmt::format("p{:03d}kPa", static_cast<int>(kpa));
+    }
+    return fmt::format("p{:g}kPa", kpa);
+}
+
+constexpr const char* kCompactionSeries = "compaction";
+
+/// Numeric columns of the series (the `stage` text column is kept beside the rows).
+std::vector<SeriesColumn> numericColumns() {
+    std::vector<SeriesColumn> out;
+    for (const auto& c : seriesColumns()) {
+        if (!c.text) {
+            out.push_back(c);
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+struct ExperimentRunner::Impl {
+    ExperimentConfig config;
+    RunOutput* output = nullptr;
+    std::unique_ptr<Simulation> sim;
+    Phase phase = Phase::Compaction;
+    int index = 0;                 ///< compaction pressure index, or shear pressure index
+    int calm = 0;                  ///< consecutive passing equilibrium checks
+    std::int64_t stageStartStep = 0;
+    double length1At0 = 0, length2At0 = 0, areaAt0 = 0; ///< strain references [m], [m^2]
+    double voidsAtStart = -1;      ///< N_vi of the current test
+    bool haveLast = false;
+    double lastEps1 = 0, lastEpsv = 0;
+    double nextRecordStrain = 0, nextSnapshotStrain = 0;
+    std::int64_t nextRecordStep = 0, nextSnapshotStep = 0;
+    std::int64_t checkpointCounter = 0;
+    std::vector<double> thetaAtTestStart;
+    std::map<double, SimulationState> samples;
+    std::vector<SeriesTable> series;
+    int currentSeries = -1;
+
+    double pressure() const {
+        return phase == Phase::Compaction ? config.compaction.pressures.at(index)
+                                          : config.shear.pressures.at(index);
+    }
+    std::string stageName() const {
+        switch (phase) {
+        case Phase::Compaction:
+            return "compaction " + kiloPascal(pressure());
+        case Phase::Equilibration:
+            return "equilibration " + kiloPascal(pressure());
+        case Phase::Shear:
+            return "shear " + kiloPascal(pressure());
+        default:
+            return "done";
+        }
+    }
+    const EquilibriumCriterion& criterion() const {
+        return phase == Phase::Compaction ? config.compaction.criterion
+                                          : config.shear.equilibration;
+    }
+
+    int seriesIndex(const std::string& name) {
+        for (std::size_t k = 0; k < series.size(); ++k) {
+            if (series[k].test == name) {
+                return static_cast<int>(k);
+            }
+        }
+        SeriesTable t;
+        t.test = name;
+        t.columns = numericColumns();
+        series.push_back(std::move(t));
+        return static_cast<int>(series.size()) - 1;
+    }
+
+    // ---- stage set-up ----
+
+    void startCompaction(int k) {
+        phase = Phase::Compaction;
+        index = k;
+        calm = 0;
+        stageStartStep = sim->stepCount();
+        const AxisControl servo{AxisMode::Stress, 0.0, pressure()};
+        sim->setAxisControl(0, servo);
+        sim->setAxisControl(1, servo);
+        currentSeries = seriesIndex(kCompactionSeries);
+        if (k == 0) {
+            setStrainReference();
+        }
+        nextRecordStep = sim->stepCount();
+        nextSnapshotStep = sim->stepCount() + config.record.snapshotStepInterval;
+    }
+
+    void startEquilibration(int k) {
+        phase = Phase::Equilibration;
+        index = k;
+        calm = 0;
+        SimulationState state = samples.at(pressure());
+        state.parameters.friction = config.shear.friction;
+        state.parameters.servo.maxStrainRate = config.shear.maxStrainRate;
+        state.parameters.threads = config.parameters.threads;
+        sim = std::make_unique<Simulation>(std::move(state));
+        stageStartStep = sim->stepCount();
+        const AxisControl servo{AxisMode::Stress, 0.0, pressure()};
+        sim->setAxisControl(0, servo);
+        sim->setAxisControl(1, servo);
+        currentSeries = seriesIndex(testName(pressure()));
+        setStrainReference();
+        thetaAtTestStart = sim->stateRef().grains.theta;
+        nextRecordStep = sim->stepCount();
+        nextSnapshotStep = sim->stepCount() + config.record.snapshotStepInterval;
+    }
+
+    void startShear() {
+        phase = Phase::Shear;
+        stageStartStep = sim->stepCount();
+        setStrainReference();
+        voidsAtStart = -1;
+        const double dt = config.parameters.timeStep;
+        sim->setAxisControl(0, {AxisMode::Strain, config.shear.axialStrainPerStep / dt, 0.0,
+                                length1At0});
+        sim->setAxisControl(1, {AxisMode::Stress, 0.0, pressure()});
+        nextRecordStrain = 0.0;
+        nextSnapshotStrain = config.record.snapshotStrainInterval;
+    }
+
+    void setStrainReference() {
+        length1At0 = sim->cell()[0];
+        length2At0 = sim->cell()[3];
+        areaAt0 = sim->cellArea();
+        haveLast = false;
+    }
+
+    // ---- measures ----
+
+    double eps1() const { return (length1At0 - sim->cell()[0]) / length1At0; }
+    double eps2() const { return (length2At0 - sim->cell()[3]) / length2At0; }
+    double epsv() const { return (areaAt0 - sim->cellArea()) / areaAt0; }
+
+    void record(const ContactNetwork& network, const MeasureSet& measures) {
+        RecordInputs in;
+        in.step = sim->stepCount();
+        in.time = sim->time();
+        in.eps1 = eps1();
+        in.eps2 = eps2();
+        in.epsv = epsv();
+        in.dilatancyIndex = haveLast && in.eps1 != lastEps1
+                                ? -(in.epsv - lastEpsv) / (in.eps1 - lastEps1)
+                                : 0.0;
+        in.stress = sim->stress();
+        if (phase == Phase::Shear && voidsAtStart < 0) {
+            voidsAtStart = measures.voidCells.voidCount;
+        }
+        in.initialVoidCount = phase == Phase::Shear ? voidsAtStart : 0.0;
+        const auto& L = sim->stateRef().velocityGradient;
+        in.strainRate1 = -L[0];
+        in.strainRate2 = -L[3];
+        in.density = config.parameters.density;
+        in.energies = sim->energies();
+        (void)network;
+        SeriesTable& t = series[currentSeries];
+        t.rows.push_back(seriesRow(measures, in));
+        t.stages.push_back(stageName());
+        lastEps1 = in.eps1;
+        lastEpsv = in.epsv;
+        haveLast = true;
+        if (output) {
+            output->record(t);
+        }
+    }
+
+    void recordNow() {
+        const ContactNetwork network = sim->contactNetwork();
+        record(network, computeMeasures(network));
+    }
+
+    std::string runnerState() const {
+        nlohmann::json j;
+        j["phase"] = static_cast<int>(phase);
+        j["index"] = index;
+        j["calm"] = calm;
+        j["stage_start_step"] = stageStartStep;
+        j["length1_at0"] = length1At0;
+        j["length2_at0"] = length2At0;
+        j["area_at0"] = areaAt0;
+        j["voids_at_start"] = voidsAtStart;
+        j["have_last"] = haveLast;
+        j["last_eps1"] = lastEps1;
+        j["last_epsv"] = lastEpsv;
+        j["next_record_strain"] = nextRecordStrain;
+        j["next_snapshot_strain"] = nextSnapshotStrain;
+        j["next_record_step"] = nextRecordStep;
+        j["next_snapshot_step"] = nextSnapshotStep;
+        j["checkpoint_counter"] = checkpointCounter;
+        j["theta_at_test_start"] = thetaAtTestStart;
+        j["current_series"] = currentSeries >= 0 ? series[currentSeries].test : "";
+        nlohmann::json rows = nlohmann::json::object();
+        for (const auto& t : series) {
+            rows[t.test] = t.rows.size();
+        }
+        j["series_rows"] = rows;
+        return j.dump();
+    }
+
+    void restore(const std::string& text) {
+        const nlohmann::json j = nlohmann::json::parse(text);
+        phase = static_cast<Phase>(j.at("phase").get<int>());
+        index = j.at("index");
+        calm = j.at("calm");
+        stageStartStep = j.at("stage_start_step");
+        length1At0 = j.at("length1_at0");
+        length2At0 = j.at("length2_at0");
+        areaAt0 = j.at("area_at0");
+        voidsAtStart = j.at("voids_at_start");
+        haveLast = j.at("have_last");
+        lastEps1 = j.at("last_eps1");
+        lastEpsv = j.at("last_epsv");
+        nextRecordStrain = j.at("next_record_strain");
+        nextSnapshotStrain = j.at("next_snapshot_strain");
+        nextRecordStep = j.at("next_record_step");
+        nextSnapshotStep = j.at("next_snapshot_step");
+        checkpointCounter = j.at("checkpoint_counter");
+        thetaAtTestStart = j.at("theta_at_test_start").get<std::vector<double>>();
+        const std::string current = j.at("current_series");
+        currentSeries = current.empty() ? -1 : seriesIndex(current);
+    }
+
+    void checkpoint(const std::string& label) {
+        if (!output) {
+            return;
+        }
+        ++checkpointCounter;
+        output->checkpoint(fmt::format("{:06d}-{}", checkpointCounter, label), sim->state(),
+                           runnerState());
+    }
+
+    std::string checkpointLabel() const {
+        std::string stage = stageName();
+        std::replace(stage.begin(), stage.end(), ' ', '-');
+        return fmt::format("{}-step{}", stage, sim->stepCount());
+    }
+
+    // ---- stepping ----
+
+    /// Steps until the next thing the runner must look at.
+    std::int64_t stepsToNextEvent() const {
+        const std::int64_t now = sim->stepCount();
+        if (phase == Phase::Shear) {
+            const double perStep = config.shear.axialStrainPerStep;
+            const double next = std::min({nextRecordStrain, nextSnapshotStrain,
+                                          config.shear.targetAxialStrain});
+            const double steps = std::ceil((next - eps1()) / perStep - 1e-9);
+            return std::max<std::int64_t>(1, static_cast<std::int64_t>(steps));
+        }
+        const std::int64_t check = criterion().checkInterval;
+        const std::int64_t nextCheck = stageStartStep + ((now - stageStartStep) / check + 1) * check;
+        std::int64_t next = std::min(nextCheck, nextSnapshotStep);
+        if (nextRecordStep > now) {
+            next = std::min(next, nextRecordStep);
+        }
+        return std::max<std::int64_t>(1, next - now);
+    }
+
+    /// Looks at the state after a chunk of steps: records, checkpoints, stage transitions.
+    void handleEvents() {
+        const std::int64_t now = sim->stepCount();
+        if (phase == Phase::Shear) {
+            const double e1 = eps1();
+            const bool end = e1 >= config.shear.targetAxialStrain - 1e-12;
+            if (e1 >= nextRecordStrain - 1e-12 || end) {
+                recordNow();
+                while (nextRecordStrain <= e1 + 1e-12) {
+                    nextRecordStrain += config.record.strainInterval;
+                }
+            }
+            if (e1 >= nextSnapshotStrain - 1e-12 && !end) {
+                checkpoint(checkpointLabel());
+                while (nextSnapshotStrain <= e1 + 1e-12) {
+                    nextSnapshotStrain += config.record.snapshotStrainInterval;
+                }
+            }
+            if (end) {
+                finishShear();
+            }
+            return;
+        }
+        if (now >= nextRecordStep) {
+            recordNow();
+            nextRecordStep = now + config.record.stepInterval;
+        }
+        if (now >= nextSnapshotStep) {
+            checkpoint(checkpointLabel());
+            nextSnapshotStep = now + config.record.snapshotStepInterval;
+        }
+        const EquilibriumCriterion& c = criterion();
+        if ((now - stageStartStep) % c.checkInterval == 0) {
+            const double target = pressure();
+            const Stress s = sim->stress();
+            const double error =
+                std::max(std::fabs(s.s11 - target), std::fabs(s.s22 - target)) / target;
+            const double unbalanced = unbalancedForceIndex(sim->contactNetwork());
+            const bool pass = error <= c.stressTolerance && unbalanced <= c.unbalancedForceMax &&
+                              sim->contactCount() > 0;
+            calm = pass ? calm + 1 : 0;
+            if (calm >= c.calmChecks) {
+                finishEquilibrium();
+                return;
+            }
+            if (now - stageStartStep >= c.maxSteps) {
+                throw std::runtime_error(fmt::format(
+                    "stage '{}' did not reach equilibrium within {} steps (stress error {:.3g} % "
+                    "against the tolerance {:.3g} %, unbalanced-force index {:.3g} % against "
+                    "{:.3g} %); raise the stage's criterion.max_steps or relax its criterion",
+                    stageName(), c.maxSteps, 100 * error, 100 * c.stressTolerance, unbalanced,
+                    c.unbalancedForceMax));
+            }
+        }
+    }
+
+    void finishEquilibrium() {
+        recordNow();
+        if (phase == Phase::Compaction) {
+            sim->clearVelocities();
+            SimulationState sample = sim->state();
+            samples[pressure()] = sample;
+            if (output) {
+                output->sample(pressure(), sample);
+            }
+            checkpoint(checkpointLabel());
+            if (index + 1 < int(config.compaction.pressures.size())) {
+                startCompaction(index + 1);
+            } else if (!config.shear.pressures.empty()) {
+                startEquilibration(0);
+                checkpoint(checkpointLabel());
+            } else {
+                phase = Phase::Done;
+            }
+        } else {
+            startShear();
+            recordNow(); // eps1 = 0: N_vi
+            checkpoint(checkpointLabel());
+        }
+    }
+
+    void finishShear() {
+        checkpoint(checkpointLabel());
+        if (index + 1 < int(config.shear.pressures.size())) {
+            startEquilibration(index + 1);
+            checkpoint(checkpointLabel());
+        } else {
+            phase = Phase::Done;
+        }
+    }
+
+    double fraction() const {
+        // Weights: a compaction stage 1, an equilibration 0.2, a shear 3 (rough cost ratios).
+        const double nc = double(config.compaction.pressures.size());
+        const double ns = double(config.shear.pressures.size());
+        const double total = nc + ns * 3.2;
+        double done = 0;
+        switch (phase) {
+        case Phase::Compaction:
+            done = index + std::min(1.0, double(calm) / criterion().calmChecks) * 0.5;
+            break;
+        case Phase::Equilibration:
+            done = nc + index * 3.2 + 0.1;
+            break;
+        case Phase::Shear:
+            done = nc + index * 3.2 + 0.2 + 3.0 * std::clamp(eps1() / config.shear.targetAxialStrain, 0.0, 1.0);
+            break;
+        case Phase::Done:
+            done = total;
+            break;
+        }
+        return total > 0 ? std::clamp(done / total, 0.0, 1.0) : 1.0;
+    }
+};
+
+ExperimentRunner::ExperimentRunner(ExperimentConfig config, RunOutput* output)
+    : impl_(std::make_unique<Impl>()) {
+    impl_->config = std::move(config);
+    impl_->output = output;
+    const ExperimentConfig& c = impl_->config;
+    if (c.compaction.pressures.empty()) {
+        throw std::invalid_argument("experiment: compaction.pressures is empty");
+    }
+    SimulationParameters p = c.parameters;
+    p.friction = c.compaction.friction;
+    p.servo.maxStrainRate = c.compaction.maxStrainRate;
+    impl_->sim = std::make_unique<Simulation>(generateGridAssembly(c.assembly, p));
+    impl_->startCompaction(0);
+}
+
+ExperimentRunner::ExperimentRunner(ExperimentConfig config, ResumePoint resume, RunOutput* output)
+    : impl_(std::make_unique<Impl>()) {
+    impl_->config = std::move(config);
+    impl_->output = output;
+    impl_->samples = std::move(resume.samples);
+    const auto rows = seriesRowsAtCheckpoint(resume.runnerState);
+    for (SeriesTable& t : resume.series) {
+        const auto it = rows.find(t.test);
+        const std::size_t keep = it == rows.end() ? 0 : it->second;
+        t.rows.resize(std::min(keep, t.rows.size()));
+        t.stages.resize(std::min(keep, t.stages.size()));
+        impl_->series.push_back(std::move(t));
+    }
+    resume.state.parameters.threads = impl_->config.parameters.threads;
+    impl_->sim = std::make_unique<Simulation>(std::move(resume.state));
+    impl_->restore(resume.runnerState);
+}
+
+ExperimentRunner::~ExperimentRunner() = default;
+
+bool ExperimentRunner::advance(std::int64_t maxSteps) {
+    Impl& m = *impl_;
+    std::int64_t done = 0;
+    while (done < maxSteps && m.phase != Phase::Done) {
+        const std::int64_t chunk = std::min(m.stepsToNextEvent(), maxSteps - done);
+        m.sim->advance(chunk);
+        done += chunk;
+        m.handleEvents();
+    }
+    return m.phase != Phase::Done;
+}
+
+bool ExperimentRunner::finished() const { return impl_->phase == Phase::Done; }
+
+RunProgress ExperimentRunner::progress() const {
+    const Impl& m = *impl_;
+    RunProgress p;
+    p.stage = m.stageName();
+    p.test = m.currentSeries >= 0 ? m.series[m.currentSeries].test : "";
+    p.axialStrain = m.phase == Phase::Shear ? m.eps1() : 0.0;
+    p.fraction = m.fraction();
+    p.step = m.sim->stepCount();
+    p.finished = m.phase == Phase::Done;
+    return p;
+}
+
+const ExperimentConfig& ExperimentRunner::config() const { return impl_->config; }
+const Simulation& ExperimentRunner::simulation() const { return *impl_->sim; }
+const std::vector<SeriesTable>& ExperimentRunner::series() const { return impl_->series; }
+
+void ExperimentRunner::checkpointNow(const std::string& name) { impl_->checkpoint(name); }
+
+std::map<std::string, std::size_t>
+ExperimentRunner::seriesRowsAtCheckpoint(const std::string& runnerState) {
+    std::map<std::string, std::size_t> out;
+    const nlohmann::json j = nlohmann::json::parse(runnerState);
+    for (const auto& [name, count] : j.at("series_rows").items()) {
+        out[name] = count.get<std::size_t>();
+    }
+    return out;
+}
+
+SnapshotPtr ExperimentRunner::snapshot() const {
+    const Impl& m = *impl_;
+    const Simulation& sim = *m.sim;
+    auto snap = std::make_shared<Snapshot>();
+    const RunProgress p = progress();
+    snap->step = sim.stepCount();
+    snap->time = sim.time();
+    snap->stage = p.stage;
+    snap->test = p.test;
+    snap->axialStrain = p.axialStrain;
+    snap->progress = p.fraction;
+    const SimulationState& s = sim.stateRef();
+    snap->shapes = s.shapes;
+    snap->shape = s.grains.shape;
+    snap->network = sim.contactNetwork();
+    snap->x1 = snap->network.x1;
+    snap->x2 = snap->network.x2;
+    snap->theta = s.grains.theta;
+    snap->rotation.resize(s.grains.size());
+    for (std::size_t i = 0; i < s.grains.size(); ++i) {
+        snap->rotation[i] =
+            s.grains.theta[i] - (i < m.thetaAtTestStart.size() ? m.thetaAtTestStart[i] : 0.0);
+    }
+    const MeasureSet measures = computeMeasures(snap->network);
+    snap->loadBearing = measures.loadBearing.grainInGraph;
+    for (const VoidCell& c : measures.voidCells.cells) {
+        VoidCellView v;
+        v.grains = c.grains;
+        v.area = c.area;
+        v.elongation = c.elongation;
+        v.direction = c.direction;
+        v.centroid1 = c.centroid1;
+        v.centroid2 = c.centroid2;
+        v.valence = c.valence;
+        v.x1.resize(c.vertices1.size());
+        v.x2.resize(c.vertices2.size());
+        for (std::size_t k = 0; k < c.vertices1.size(); ++k) {
+            v.x1[k] = c.centroid1 + c.vertices1[k];
+            v.x2[k] = c.centroid2 + c.vertices2[k];
+        }
+        snap->voidCells.push_back(std::move(v));
+    }
+    snap->series = m.series;
+    return snap;
+}
+
+} // namespace grainlab
