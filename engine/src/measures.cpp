@@ -300,7 +300,8 @@ const std::vector<SeriesColumn>& seriesColumns() {
 }
 
 std::string seriesHeader(const SeriesColumn& column) {
-    return column.name + " [" + column.unit + "]";
+    // The text column `stage` has no unit: its header is the bare name.
+    return column.text ? column.name : column.name + " [" + column.unit + "]";
 }
 
 std::vector<double> seriesRow(const MeasureSet& m, const RecordInputs& in) {

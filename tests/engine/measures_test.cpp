@@ -249,6 +249,7 @@ TEST(Measures, SeriesColumnsFollowTheSpec) {
     EXPECT_EQ(seriesHeader(columns[8]), "sigma22 [Pa]");
     EXPECT_EQ(seriesHeader(columns[12]), "q_over_p [-]");
     EXPECT_EQ(seriesHeader(columns[1]), "time [s]");
+    EXPECT_EQ(seriesHeader(columns[2]), "stage");
     EXPECT_EQ(seriesHeader(columns[43]), "I_uf [%]");
     EXPECT_EQ(seriesHeader(columns[48]), "W_damping [J]");
 }

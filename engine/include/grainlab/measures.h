@@ -121,7 +121,7 @@ MeasureSet computeMeasures(const ContactNetwork& network, const MeasureOptions& 
 
 /// The columns of SPEC §4 in order, `stage` included.
 const std::vector<SeriesColumn>& seriesColumns();
-/// "name [unit]".
+/// "name [unit]" (the text column `stage`: its bare name).
 std::string seriesHeader(const SeriesColumn& column);
 
 /// What a row needs beyond the contact network: supplied by the recorder.

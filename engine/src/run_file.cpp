@@ -1,0 +1,457 @@
+#include "grainlab/run_file.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <ctime>
+#include <map>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "run_file_io.h"
+
+#ifndef GRAINLAB_VERSION
+#define GRAINLAB_VERSION "unknown"
+#endif
+
+namespace grainlab {
+
+namespace {
+
+constexpr hsize_t kSeriesChunk = 1024; ///< rows per chunk of a series dataset
+constexpr const char* kWritingSuffix = ".writing";
+constexpr double kRecordFlushSeconds = 2.0;
+
+using namespace hdf5io;
+
+/// Next write-order index among the children of `parent` (attribute `index`).
+std::int64_t nextIndex(const H5::Group& parent) {
+    std::int64_t next = 0;
+    for (hsize_t i = 0; i < parent.getNumObjs(); ++i) {
+        const H5::Group child = parent.openGroup(parent.getObjnameByIdx(i));
+        if (child.attrExists("index")) {
+            next = std::max(next, readAttribute<std::int64_t>(child, "index") + 1);
+        }
+    }
+    return next;
+}
+
+/// Children of `parent` sorted by their `index` attribute; incomplete ones are skipped.
+std::vector<std::string> childrenInWriteOrder(const H5::Group& parent) {
+    std::vector<std::pair<std::int64_t, std::string>> children;
+    for (hsize_t i = 0; i < parent.getNumObjs(); ++i) {
+        const std::string link = parent.getObjnameByIdx(i);
+        if (link.size() > std::string(kWritingSuffix).size() && link.ends_with(kWritingSuffix)) {
+            continue;
+        }
+        const H5::Group child = parent.openGroup(link);
+        if (child.attrExists("index")) {
+            children.emplace_back(readAttribute<std::int64_t>(child, "index"), link);
+        }
+    }
+    std::sort(children.begin(), children.end());
+    std::vector<std::string> links;
+    for (auto& c : children) {
+        links.push_back(std::move(c.second));
+    }
+    return links;
+}
+
+H5::Group openOrCreateGroup(H5::Group& parent, const std::string& name) {
+    return parent.nameExists(name) ? parent.openGroup(name) : parent.createGroup(name);
+}
+
+std::string isoTimeNow() {
+    const std::time_t now = std::time(nullptr);
+    std::tm utc{};
+    gmtime_r(&now, &utc);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+    return text;
+}
+
+void checkTable(const SeriesTable& t) {
+    if (t.stages.size() != t.rows.size()) {
+        throw std::invalid_argument(fmt::format("series {}: {} rows but {} stage names", t.test,
+                                                t.rows.size(), t.stages.size()));
+    }
+    for (std::size_t c = 0; c < t.columns.size(); ++c) {
+        const std::string& name = t.columns[c].name;
+        if (name.empty() || name == "stage" || name.find('/') != std::string::npos ||
+            t.column(name) != static_cast<int>(c)) {
+            throw std::invalid_argument(fmt::format("series {}: column name \"{}\" is empty, "
+                                                    "reserved, contains '/' or repeats",
+                                                    t.test, name));
+        }
+    }
+    for (std::size_t k = 0; k < t.rows.size(); ++k) {
+        if (t.rows[k].size() != t.columns.size()) {
+            throw std::invalid_argument(fmt::format("series {}: record {} has {} values for {} "
+                                                    "columns",
+                                                    t.test, k, t.rows[k].size(), t.columns.size()));
+        }
+    }
+}
+
+} // namespace
+
+// ---- writer --------------------------------------------------------------------------------
+
+struct RunFile::Impl {
+    /// The open datasets of one test's series.
+    struct OpenSeries {
+        H5::Group group; ///< /tests/<test>/series
+        std::vector<SeriesColumn> columns;
+        std::vector<H5::DataSet> values;
+        H5::DataSet stage;
+        std::size_t rows = 0;
+    };
+
+    std::string path;
+    H5::H5File file;
+    std::map<std::string, OpenSeries> series;
+    std::chrono::steady_clock::time_point lastFlush = std::chrono::steady_clock::now();
+
+    OpenSeries& seriesFor(const SeriesTable& table);
+    void createSeries(H5::Group& test, const SeriesTable& table, OpenSeries& out);
+    void writeStateGroup(const std::string& parent, const std::string& name,
+                         const SimulationState& state, const std::string* runnerState,
+                         const std::vector<std::pair<std::string, double>>& extra);
+    void flushNow() {
+        file.flush(H5F_SCOPE_GLOBAL);
+        lastFlush = std::chrono::steady_clock::now();
+    }
+};
+
+void RunFile::Impl::createSeries(H5::Group& test, const SeriesTable& table, OpenSeries& out) {
+    if (test.nameExists("series")) {
+        test.unlink("series");
+    }
+    out = OpenSeries{};
+    out.group = test.createGroup("series");
+    out.columns = table.columns;
+    std::vector<std::string> names;
+    for (const auto& c : table.columns) {
+        names.push_back(c.name);
+    }
+    writeStringListAttribute(out.group, "columns", names);
+
+    const hsize_t zero = 0, unlimited = H5S_UNLIMITED, chunk = kSeriesChunk;
+    H5::DataSpace space(1, &zero, &unlimited);
+    H5::DSetCreatPropList chunked;
+    chunked.setChunk(1, &chunk);
+    for (const auto& c : table.columns) {
+        H5::DataSet ds = out.group.createDataSet(c.name, H5Types<double>::file(), space, chunked);
+        writeAttribute(ds, "unit", c.unit.empty() ? std::string("-") : c.unit);
+        out.values.push_back(ds);
+    }
+    out.stage = out.group.createDataSet("stage", stringType(), space, chunked);
+}
+
+RunFile::Impl::OpenSeries& RunFile::Impl::seriesFor(const SeriesTable& table) {
+    auto it = series.find(table.test);
+    if (it == series.end()) {
+        OpenSeries s;
+        H5::Group tests = file.openGroup("tests");
+        const std::string link = linkName(table.test);
+        if (tests.nameExists(link) && tests.openGroup(link).nameExists("series")) {
+            // Resumed file: continue the series already there.
+            H5::Group test = tests.openGroup(link);
+            s.group = test.openGroup("series");
+            for (const auto& name : readStringListAttribute(s.group, "columns")) {
+                H5::DataSet ds = s.group.openDataSet(name);
+                s.columns.push_back({name, readStringAttribute(ds, "unit")});
+                s.values.push_back(ds);
+            }
+            s.stage = s.group.openDataSet("stage");
+            s.rows = static_cast<std::size_t>(s.stage.getSpace().getSimpleExtentNpoints());
+        } else {
+            H5::Group test = openOrCreateGroup(tests, link);
+            writeAttribute(test, "name", table.test);
+            writeAttribute(test, "index", nextIndex(tests));
+            createSeries(test, table, s);
+        }
+        it = series.emplace(table.test, std::move(s)).first;
+    }
+    OpenSeries& s = it->second;
+    bool sameColumns = s.columns.size() == table.columns.size();
+    for (std::size_t c = 0; sameColumns && c < s.columns.size(); ++c) {
+        const std::string unit = table.columns[c].unit.empty() ? "-" : table.columns[c].unit;
+        sameColumns = s.columns[c].name == table.columns[c].name && s.columns[c].unit == unit;
+    }
+    if (!sameColumns) {
+        H5::Group test = file.openGroup("tests").openGroup(linkName(table.test));
+        createSeries(test, table, s);
+    }
+    return s;
+}
+
+RunFile::RunFile(const std::string& path, const std::string& experimentText, Mode mode)
+    : impl_(std::make_unique<Impl>()) {
+    impl_->path = path;
+    guarded(path, mode == Mode::Create ? "creating the run file" : "opening the run file", [&] {
+        if (mode == Mode::Create) {
+            impl_->file = H5::H5File(path, H5F_ACC_TRUNC);
+            H5::Group root = impl_->file.openGroup("/");
+            writeAttribute(root, "software", std::string("GrainLab"));
+            writeAttribute(root, "software_version", std::string(GRAINLAB_VERSION));
+            writeAttribute(root, "created", isoTimeNow());
+            writeAttribute(root, "format_version", std::int32_t(kRunFileFormatVersion));
+            writeStringDataset(root, "experiment", experimentText);
+            root.createGroup("tests");
+            root.createGroup("checkpoints");
+            root.createGroup("samples");
+            impl_->flushNow();
+        } else {
+            impl_->file = H5::H5File(path, H5F_ACC_RDWR);
+            H5::Group root = impl_->file.openGroup("/");
+            if (readStringDataset(root, "experiment") != experimentText) {
+                throw std::runtime_error(
+                    fmt::format("{}: the run file was written by a different experiment "
+                                "file; refusing to continue it",
+                                path));
+            }
+            for (const char* g : {"tests", "checkpoints", "samples"}) {
+                openOrCreateGroup(root, g);
+            }
+            impl_->flushNow();
+        }
+    });
+}
+
+RunFile::~RunFile() {
+    try {
+        impl_->series.clear();
+        impl_->flushNow();
+        impl_->file.close();
+    } catch (...) {
+        // A destructor must not throw; the last explicit flush stands.
+    }
+}
+
+const std::string& RunFile::path() const {
+    return impl_->path;
+}
+
+void RunFile::flush() {
+    guarded(impl_->path, "flushing", [&] { impl_->flushNow(); });
+}
+
+void RunFile::record(const SeriesTable& table) {
+    checkTable(table);
+    guarded(impl_->path, "writing the series of " + table.test, [&] {
+        Impl::OpenSeries& s = impl_->seriesFor(table);
+        const std::size_t n = table.rows.size();
+        // Rows [from, n) are written; fewer rows than the file means the run was rewound.
+        const std::size_t from = n > s.rows ? s.rows : (n == 0 ? 0 : n - 1);
+        for (std::size_t k = from; k < n; ++k) {
+            for (std::size_t c = 0; c < table.columns.size(); ++c) {
+                if (!std::isfinite(table.rows[k][c])) {
+                    throw std::runtime_error(fmt::format(
+                        "{}: series {}: column {} of record {} is {}; refusing to write a "
+                        "non-finite value",
+                        impl_->path, table.test, table.columns[c].name, k,
+                        std::isnan(table.rows[k][c]) ? "NaN" : "infinite"));
+                }
+            }
+        }
+        const hsize_t size = n, start = from, count = n - from;
+        for (auto& ds : s.values) {
+            ds.extend(&size);
+        }
+        s.stage.extend(&size);
+        s.rows = n;
+        if (count > 0) {
+            H5::DataSpace memory(1, &count);
+            std::vector<double> column(count);
+            for (std::size_t c = 0; c < s.values.size(); ++c) {
+                for (std::size_t k = 0; k < count; ++k) {
+                    column[k] = table.rows[from + k][c];
+                }
+                H5::DataSpace filespace = s.values[c].getSpace();
+                filespace.selectHyperslab(H5S_SELECT_SET, &count, &start);
+                s.values[c].write(column.data(), H5Types<double>::memory(), memory, filespace);
+            }
+            std::vector<const char*> stages;
+            for (std::size_t k = 0; k < count; ++k) {
+                stages.push_back(table.stages[from + k].c_str());
+            }
+            H5::DataSpace filespace = s.stage.getSpace();
+            filespace.selectHyperslab(H5S_SELECT_SET, &count, &start);
+            s.stage.write(stages.data(), stringType(), memory, filespace);
+        }
+        const std::chrono::duration<double> sinceFlush =
+            std::chrono::steady_clock::now() - impl_->lastFlush;
+        if (sinceFlush.count() >= kRecordFlushSeconds) {
+            impl_->flushNow();
+        }
+    });
+}
+
+void RunFile::Impl::writeStateGroup(const std::string& parentName, const std::string& name,
+                                    const SimulationState& state, const std::string* runnerState,
+                                    const std::vector<std::pair<std::string, double>>& extra) {
+    H5::Group parent = file.openGroup(parentName);
+    const std::string link = linkName(name);
+    const std::string scratch = link + kWritingSuffix;
+    if (parent.nameExists(scratch)) {
+        parent.unlink(scratch); // left over from a run killed while writing
+    }
+    try {
+        H5::Group g = parent.createGroup(scratch);
+        writeAttribute(g, "name", name);
+        writeState(g, state);
+        for (const auto& [key, value] : extra) {
+            writeAttribute(g, key, value);
+        }
+        if (runnerState) {
+            writeStringDataset(g, "runner_state", *runnerState);
+        }
+        writeAttribute(g, "index", nextIndex(parent));
+    } catch (...) {
+        parent.unlink(scratch);
+        throw;
+    }
+    // The complete group replaces an older one of the same name only now.
+    if (parent.nameExists(link)) {
+        parent.unlink(link);
+    }
+    parent.moveLink(scratch, link);
+    flushNow();
+}
+
+void RunFile::checkpoint(const std::string& name, const SimulationState& state,
+                         const std::string& runnerState) {
+    try {
+        guarded(impl_->path, "writing checkpoint " + name,
+                [&] { impl_->writeStateGroup("checkpoints", name, state, &runnerState, {}); });
+    } catch (const std::runtime_error& e) {
+        const std::string what = e.what();
+        if (what.starts_with(impl_->path)) {
+            throw;
+        }
+        throw std::runtime_error(fmt::format("{}: checkpoint {}: {}", impl_->path, name, what));
+    }
+}
+
+void RunFile::sample(double pressure, const SimulationState& state) {
+    const std::string name = sampleGroup(pressure).substr(std::string("/samples/").size());
+    try {
+        guarded(impl_->path, "writing sample " + name, [&] {
+            impl_->writeStateGroup("samples", name, state, nullptr, {{"pressure", pressure}});
+        });
+    } catch (const std::runtime_error& e) {
+        const std::string what = e.what();
+        if (what.starts_with(impl_->path)) {
+            throw;
+        }
+        throw std::runtime_error(fmt::format("{}: sample {}: {}", impl_->path, name, what));
+    }
+}
+
+// ---- readers -------------------------------------------------------------------------------
+
+namespace {
+
+template <class F>
+auto withFile(const std::string& path, const std::string& what, F&& f) {
+    return guarded(path, what, [&] {
+        H5::H5File file(path, H5F_ACC_RDONLY);
+        return f(file);
+    });
+}
+
+} // namespace
+
+std::string checkpointGroup(const std::string& name) {
+    return "/checkpoints/" + linkName(name);
+}
+
+std::string sampleGroup(double pressure) {
+    return fmt::format("/samples/{}Pa", pressure);
+}
+
+SimulationState readState(const std::string& path, const std::string& groupPath) {
+    return withFile(path, "reading the state in " + groupPath,
+                    [&](H5::H5File& file) { return hdf5io::readState(file.openGroup(groupPath)); });
+}
+
+std::string readRunnerState(const std::string& path, const std::string& groupPath) {
+    return withFile(path, "reading the runner state in " + groupPath, [&](H5::H5File& file) {
+        const H5::Group g = file.openGroup(groupPath);
+        return g.nameExists("runner_state") ? readStringDataset(g, "runner_state") : std::string();
+    });
+}
+
+std::vector<std::string> listCheckpoints(const std::string& path) {
+    return withFile(path, "listing checkpoints", [&](H5::H5File& file) {
+        const H5::Group parent = file.openGroup("checkpoints");
+        std::vector<std::string> names;
+        for (const auto& link : childrenInWriteOrder(parent)) {
+            names.push_back(readStringAttribute(parent.openGroup(link), "name"));
+        }
+        return names;
+    });
+}
+
+std::vector<double> listSamples(const std::string& path) {
+    return withFile(path, "listing samples", [&](H5::H5File& file) {
+        const H5::Group parent = file.openGroup("samples");
+        std::vector<double> pressures;
+        for (const auto& link : childrenInWriteOrder(parent)) {
+            pressures.push_back(readAttribute<double>(parent.openGroup(link), "pressure"));
+        }
+        return pressures;
+    });
+}
+
+std::vector<std::string> listTests(const std::string& path) {
+    return withFile(path, "listing tests", [&](H5::H5File& file) {
+        const H5::Group parent = file.openGroup("tests");
+        std::vector<std::string> names;
+        for (const auto& link : childrenInWriteOrder(parent)) {
+            names.push_back(readStringAttribute(parent.openGroup(link), "name"));
+        }
+        return names;
+    });
+}
+
+SeriesTable readSeries(const std::string& path, const std::string& test) {
+    return withFile(path, "reading the series of " + test, [&](H5::H5File& file) {
+        const H5::Group g = file.openGroup("tests").openGroup(linkName(test)).openGroup("series");
+        SeriesTable table;
+        table.test = test;
+        table.stages = readStringArray(g.openDataSet("stage"));
+        table.rows.assign(table.stages.size(), {});
+        for (const auto& name : readStringListAttribute(g, "columns")) {
+            const H5::DataSet ds = g.openDataSet(name);
+            table.columns.push_back({name, readStringAttribute(ds, "unit")});
+            const std::vector<double> values = readArray<double>(g, name);
+            if (values.size() != table.rows.size()) {
+                throw std::runtime_error(fmt::format("series {}: column {} has {} values for {} "
+                                                     "records",
+                                                     test, name, values.size(), table.rows.size()));
+            }
+            for (std::size_t k = 0; k < values.size(); ++k) {
+                table.rows[k].push_back(values[k]);
+            }
+        }
+        return table;
+    });
+}
+
+std::string readExperimentText(const std::string& path) {
+    return withFile(path, "reading /experiment", [&](H5::H5File& file) {
+        return readStringDataset(file.openGroup("/"), "experiment");
+    });
+}
+
+std::string readSoftwareVersion(const std::string& path) {
+    return withFile(path, "reading the software version", [&](H5::H5File& file) {
+        return readStringAttribute(file.openGroup("/"), "software_version");
+    });
+}
+
+} // namespace grainlab
