@@ -7,6 +7,12 @@
 #include <fmt/format.h>
 
 #include "bench.h"
+#include "run_command.h"
+
+#if defined(GRAINLAB_WITH_GUI) && __has_include("gui_app.h")
+#define GRAINLAB_HAVE_WINDOW 1
+#include "gui_app.h"
+#endif
 
 namespace grainlab {
 
@@ -24,6 +30,18 @@ int runCommandLine(int argc, char** argv) {
         ->capture_default_str();
     benchCommand->add_option("--seed", bench.seed, "random seed")->capture_default_str();
 
+    RunOptions run;
+    auto* runCommand = app.add_subcommand("run", "run an experiment headless (no display needed)");
+    runCommand->add_option("experiment", run.experiment, "experiment file (.json)");
+    runCommand->add_option("--out", run.out, "output folder (run.h5 and <test>/series.csv)");
+    runCommand->add_option("--resume", run.resume,
+                           "continue the run in this output folder from its last checkpoint");
+    runCommand->add_option("--threads", run.threads, "threads (default: the experiment's)");
+    runCommand->add_flag("--quiet", run.quiet, "no progress bar");
+
+    std::string experiment = std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json";
+    app.add_option("--experiment", experiment, "experiment to open in the window");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -33,8 +51,24 @@ int runCommandLine(int argc, char** argv) {
         if (*benchCommand) {
             return runBench(bench);
         }
+        if (*runCommand) {
+            if (run.resume.empty() == run.experiment.empty()) {
+                fmt::print(stderr, "grainlab run: give either an experiment file with --out DIR, "
+                                   "or --resume DIR\n");
+                return 2;
+            }
+            if (!run.experiment.empty() && run.out.empty()) {
+                fmt::print(stderr, "grainlab run: --out DIR is required with an experiment file\n");
+                return 2;
+            }
+            return runExperimentCommand(run);
+        }
+#ifdef GRAINLAB_HAVE_WINDOW
+        return runGui(argc, argv, experiment);
+#else
         fmt::print("{}", app.help());
         return 0;
+#endif
     } catch (const std::exception& e) {
         fmt::print(stderr, "grainlab: error: {}\n", e.what());
         return 1;

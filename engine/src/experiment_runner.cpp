@@ -28,6 +28,15 @@ std::string testName(double pressure) {
 
 constexpr const char* kCompactionSeries = "compaction";
 
+/// Threads actually used: small assemblies run on one thread, where the per-step cost of
+/// waking a second thread exceeds the work it takes over (and, on a loaded machine, a waiting
+/// OpenMP thread can cost a whole time slice per step). Results are the same bits either way.
+int threadsFor(const ExperimentConfig& config) {
+    constexpr int kGrainsPerThread = 2000;
+    return std::clamp(config.assembly.grainCount / kGrainsPerThread, 1,
+                      std::max(1, config.parameters.threads));
+}
+
 /// Numeric columns of the series (the `stage` text column is kept beside the rows).
 std::vector<SeriesColumn> numericColumns() {
     std::vector<SeriesColumn> out;
@@ -120,7 +129,7 @@ struct ExperimentRunner::Impl {
         SimulationState state = samples.at(pressure());
         state.parameters.friction = config.shear.friction;
         state.parameters.servo.maxStrainRate = config.shear.maxStrainRate;
-        state.parameters.threads = config.parameters.threads;
+        state.parameters.threads = threadsFor(config);
         sim = std::make_unique<Simulation>(std::move(state));
         stageStartStep = sim->stepCount();
         const AxisControl servo{AxisMode::Stress, 0.0, pressure()};
@@ -409,6 +418,7 @@ ExperimentRunner::ExperimentRunner(ExperimentConfig config, RunOutput* output)
     SimulationParameters p = c.parameters;
     p.friction = c.compaction.friction;
     p.servo.maxStrainRate = c.compaction.maxStrainRate;
+    p.threads = threadsFor(c);
     impl_->sim = std::make_unique<Simulation>(generateGridAssembly(c.assembly, p));
     impl_->startCompaction(0);
 }
@@ -426,7 +436,7 @@ ExperimentRunner::ExperimentRunner(ExperimentConfig config, ResumePoint resume, 
         t.stages.resize(std::min(keep, t.stages.size()));
         impl_->series.push_back(std::move(t));
     }
-    resume.state.parameters.threads = impl_->config.parameters.threads;
+    resume.state.parameters.threads = threadsFor(impl_->config);
     impl_->sim = std::make_unique<Simulation>(std::move(resume.state));
     impl_->restore(resume.runnerState);
 }

@@ -15,11 +15,9 @@ SimulationState denseAssembly(int count, double aspect) {
     if (it == cache.end()) {
         SimulationParameters p;
         p.friction = 0.0;
-        p.threads = 2;
         Simulation sim = compacted(smallAssembly(count, aspect, 1234, p), 1e5, 40000);
         sim.clearVelocities();
         SimulationState s = sim.state();
-        s.parameters.threads = 1;
         it = cache.emplace(key, std::move(s)).first;
     }
     return it->second;

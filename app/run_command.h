@@ -1,0 +1,20 @@
+#pragma once
+// `grainlab run`: runs an experiment headless with a progress bar, writing the run file and the
+// CSV series into an output folder; Ctrl-C writes a checkpoint and leaves valid files;
+// `--resume DIR` continues from the last checkpoint. Main thread.
+
+#include <string>
+
+namespace grainlab {
+
+struct RunOptions {
+    std::string experiment;  ///< experiment file (new run)
+    std::string out;         ///< output folder
+    std::string resume;      ///< output folder of a run to continue
+    int threads = 0;         ///< 0: as the experiment file says
+    bool quiet = false;      ///< no progress bar
+};
+
+int runExperimentCommand(const RunOptions& options);
+
+} // namespace grainlab

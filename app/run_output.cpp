@@ -1,0 +1,67 @@
+#include "run_output.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace grainlab {
+
+namespace fs = std::filesystem;
+
+RunOutputFolder::RunOutputFolder(const std::string& folder, const std::string& experimentText,
+                                 bool resume)
+    : folder_(folder) {
+    fs::create_directories(folder_);
+    runFile_ = std::make_unique<RunFile>(runFilePath(), experimentText,
+                                         resume ? RunFile::Mode::Resume : RunFile::Mode::Create);
+}
+
+std::string RunOutputFolder::runFilePath() const { return (fs::path(folder_) / "run.h5").string(); }
+
+std::string RunOutputFolder::seriesPath(const std::string& test) const {
+    return (fs::path(folder_) / test / "series.csv").string();
+}
+
+void RunOutputFolder::record(const SeriesTable& series) {
+    runFile_->record(series);
+    auto& appender = csv_[series.test];
+    if (!appender) {
+        fs::create_directories(fs::path(folder_) / series.test);
+        appender = std::make_unique<CsvSeriesAppender>(seriesPath(series.test));
+    }
+    appender->append(series);
+}
+
+void RunOutputFolder::checkpoint(const std::string& name, const SimulationState& state,
+                                 const std::string& runnerState) {
+    runFile_->checkpoint(name, state, runnerState);
+}
+
+void RunOutputFolder::sample(double pressure, const SimulationState& state) {
+    runFile_->sample(pressure, state);
+}
+
+ResumePoint RunOutputFolder::readResumePoint(const std::string& folder) {
+    const std::string path = (fs::path(folder) / "run.h5").string();
+    if (!fs::exists(path)) {
+        throw std::runtime_error(fmt::format("--resume {}: no run file {} there", folder, path));
+    }
+    const auto checkpoints = listCheckpoints(path);
+    if (checkpoints.empty()) {
+        throw std::runtime_error(fmt::format("--resume {}: {} holds no checkpoint yet", folder, path));
+    }
+    ResumePoint r;
+    const std::string group = checkpointGroup(checkpoints.back());
+    r.state = readState(path, group);
+    r.runnerState = readRunnerState(path, group);
+    for (double pressure : listSamples(path)) {
+        r.samples[pressure] = readState(path, sampleGroup(pressure));
+    }
+    for (const std::string& test : listTests(path)) {
+        r.series.push_back(readSeries(path, test));
+    }
+    return r;
+}
+
+} // namespace grainlab

@@ -1,0 +1,38 @@
+#pragma once
+// The output folder of a run: the HDF5 run file (run.h5) and one series.csv per test
+// (<test>/series.csv), both kept up to date record by record. Implements RunOutput for the
+// experiment runner, on the thread that drives the runner.
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "grainlab/csv_series.h"
+#include "grainlab/experiment_runner.h"
+#include "grainlab/run_file.h"
+
+namespace grainlab {
+
+class RunOutputFolder : public RunOutput {
+public:
+    /// Creates `folder` (a new run) or opens it to continue (`resume`).
+    RunOutputFolder(const std::string& folder, const std::string& experimentText, bool resume);
+
+    void record(const SeriesTable& series) override;
+    void checkpoint(const std::string& name, const SimulationState& state,
+                    const std::string& runnerState) override;
+    void sample(double pressure, const SimulationState& state) override;
+
+    std::string runFilePath() const;
+    std::string seriesPath(const std::string& test) const;
+
+    /// Everything a resumed run needs, read from the run file of `folder`.
+    static ResumePoint readResumePoint(const std::string& folder);
+
+private:
+    std::string folder_;
+    std::unique_ptr<RunFile> runFile_;
+    std::map<std::string, std::unique_ptr<CsvSeriesAppender>> csv_;
+};
+
+} // namespace grainlab
