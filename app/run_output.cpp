@@ -42,6 +42,10 @@ void RunOutputFolder::sample(double pressure, const SimulationState& state) {
     runFile_->sample(pressure, state);
 }
 
+void RunOutputFolder::voidCells(const std::string& name, const VoidCellSet& cells) {
+    runFile_->voidCells(name, cells);
+}
+
 ResumePoint RunOutputFolder::readResumePoint(const std::string& folder) {
     const std::string path = (fs::path(folder) / "run.h5").string();
     if (!fs::exists(path)) {

@@ -22,6 +22,7 @@ public:
     void checkpoint(const std::string& name, const SimulationState& state,
                     const std::string& runnerState) override;
     void sample(double pressure, const SimulationState& state) override;
+    void voidCells(const std::string& name, const VoidCellSet& cells) override;
 
     std::string runFilePath() const;
     std::string seriesPath(const std::string& test) const;

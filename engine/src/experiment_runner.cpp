@@ -62,7 +62,6 @@ struct ExperimentRunner::Impl {
     double voidsAtStart = -1;      ///< N_vi of the current test
     bool haveLast = false;
     double lastEps1 = 0, lastEpsv = 0;
-    double nextRecordStrain = 0, nextSnapshotStrain = 0;
     std::int64_t nextRecordStep = 0, nextSnapshotStep = 0;
     std::int64_t checkpointCounter = 0;
     std::vector<double> thetaAtTestStart;
@@ -151,8 +150,17 @@ struct ExperimentRunner::Impl {
         sim->setAxisControl(0, {AxisMode::Strain, config.shear.axialStrainPerStep / dt, 0.0,
                                 length1At0});
         sim->setAxisControl(1, {AxisMode::Stress, 0.0, pressure()});
-        nextRecordStrain = 0.0;
-        nextSnapshotStrain = config.record.snapshotStrainInterval;
+        // Shear events fall on whole steps counted from the start of shear (each step adds the
+        // same engineering strain), so they do not depend on how advance() is chunked.
+        nextRecordStep = stageStartStep;
+        nextSnapshotStep = stageStartStep + strideOf(config.record.snapshotStrainInterval);
+    }
+
+    std::int64_t strideOf(double strain) const {
+        return std::max<std::int64_t>(1, std::llround(strain / config.shear.axialStrainPerStep));
+    }
+    std::int64_t shearEndStep() const {
+        return stageStartStep + strideOf(config.shear.targetAxialStrain);
     }
 
     void setStrainReference() {
@@ -218,8 +226,6 @@ struct ExperimentRunner::Impl {
         j["have_last"] = haveLast;
         j["last_eps1"] = lastEps1;
         j["last_epsv"] = lastEpsv;
-        j["next_record_strain"] = nextRecordStrain;
-        j["next_snapshot_strain"] = nextSnapshotStrain;
         j["next_record_step"] = nextRecordStep;
         j["next_snapshot_step"] = nextSnapshotStep;
         j["checkpoint_counter"] = checkpointCounter;
@@ -246,8 +252,6 @@ struct ExperimentRunner::Impl {
         haveLast = j.at("have_last");
         lastEps1 = j.at("last_eps1");
         lastEpsv = j.at("last_epsv");
-        nextRecordStrain = j.at("next_record_strain");
-        nextSnapshotStrain = j.at("next_snapshot_strain");
         nextRecordStep = j.at("next_record_step");
         nextSnapshotStep = j.at("next_snapshot_step");
         checkpointCounter = j.at("checkpoint_counter");
@@ -261,8 +265,9 @@ struct ExperimentRunner::Impl {
             return;
         }
         ++checkpointCounter;
-        output->checkpoint(fmt::format("{:06d}-{}", checkpointCounter, label), sim->state(),
-                           runnerState());
+        const std::string name = fmt::format("{:06d}-{}", checkpointCounter, label);
+        output->checkpoint(name, sim->state(), runnerState());
+        output->voidCells(name, computeVoidCells(sim->contactNetwork()));
     }
 
     std::string checkpointLabel() const {
@@ -277,11 +282,8 @@ struct ExperimentRunner::Impl {
     std::int64_t stepsToNextEvent() const {
         const std::int64_t now = sim->stepCount();
         if (phase == Phase::Shear) {
-            const double perStep = config.shear.axialStrainPerStep;
-            const double next = std::min({nextRecordStrain, nextSnapshotStrain,
-                                          config.shear.targetAxialStrain});
-            const double steps = std::ceil((next - eps1()) / perStep - 1e-9);
-            return std::max<std::int64_t>(1, static_cast<std::int64_t>(steps));
+            return std::max<std::int64_t>(
+                1, std::min({nextRecordStep, nextSnapshotStep, shearEndStep()}) - now);
         }
         const std::int64_t check = criterion().checkInterval;
         const std::int64_t nextCheck = stageStartStep + ((now - stageStartStep) / check + 1) * check;
@@ -296,19 +298,14 @@ struct ExperimentRunner::Impl {
     void handleEvents() {
         const std::int64_t now = sim->stepCount();
         if (phase == Phase::Shear) {
-            const double e1 = eps1();
-            const bool end = e1 >= config.shear.targetAxialStrain - 1e-12;
-            if (e1 >= nextRecordStrain - 1e-12 || end) {
+            const bool end = now >= shearEndStep();
+            if (now >= nextRecordStep || end) {
                 recordNow();
-                while (nextRecordStrain <= e1 + 1e-12) {
-                    nextRecordStrain += config.record.strainInterval;
-                }
+                nextRecordStep = now + strideOf(config.record.strainInterval);
             }
-            if (e1 >= nextSnapshotStrain - 1e-12 && !end) {
+            if (now >= nextSnapshotStep && !end) {
                 checkpoint(checkpointLabel());
-                while (nextSnapshotStrain <= e1 + 1e-12) {
-                    nextSnapshotStrain += config.record.snapshotStrainInterval;
-                }
+                nextSnapshotStep = now + strideOf(config.record.snapshotStrainInterval);
             }
             if (end) {
                 finishShear();
@@ -369,6 +366,7 @@ struct ExperimentRunner::Impl {
         } else {
             startShear();
             recordNow(); // eps1 = 0: N_vi
+            nextRecordStep = stageStartStep + strideOf(config.record.strainInterval);
             checkpoint(checkpointLabel());
         }
     }

@@ -351,6 +351,41 @@ void RunFile::sample(double pressure, const SimulationState& state) {
     }
 }
 
+void RunFile::voidCells(const std::string& name, const VoidCellSet& cells) {
+    guarded(impl_->path, "writing the void cells of checkpoint " + name, [&] {
+        H5::Group checkpoint = impl_->file.openGroup("checkpoints").openGroup(linkName(name));
+        if (checkpoint.nameExists("void_cells")) {
+            checkpoint.unlink("void_cells");
+        }
+        H5::Group g = checkpoint.createGroup("void_cells");
+        std::vector<std::int32_t> valence, grains;
+        std::vector<std::int64_t> offsets{0};
+        std::vector<double> area, elongation, direction, centroid1, centroid2;
+        for (const VoidCell& c : cells.cells) {
+            valence.push_back(c.valence);
+            area.push_back(c.area);
+            elongation.push_back(c.elongation);
+            direction.push_back(c.direction);
+            centroid1.push_back(c.centroid1);
+            centroid2.push_back(c.centroid2);
+            grains.insert(grains.end(), c.grains.begin(), c.grains.end());
+            offsets.push_back(static_cast<std::int64_t>(grains.size()));
+        }
+        writeArray(g, "valence", valence, "-");
+        writeArray(g, "area", area, "m^2");
+        writeArray(g, "elongation", elongation, "-");
+        writeArray(g, "direction", direction, "rad");
+        writeArray(g, "centroid1", centroid1, "m");
+        writeArray(g, "centroid2", centroid2, "m");
+        writeArray(g, "grains", grains, "-");
+        writeArray(g, "grain_offsets", offsets, "-");
+        writeArray(g, "valence_histogram", cells.valenceHistogram, "-");
+        writeAttribute(g, "mean_valence", cells.meanValence);
+        writeAttribute(g, "cellular", static_cast<std::int32_t>(cells.cellular));
+        impl_->flushNow();
+    });
+}
+
 // ---- readers -------------------------------------------------------------------------------
 
 namespace {

@@ -18,6 +18,7 @@
 #include "grainlab/series.h"
 #include "grainlab/simulation.h"
 #include "grainlab/snapshot.h"
+#include "grainlab/void_cells.h"
 
 namespace grainlab {
 
@@ -42,6 +43,11 @@ public:
                             const std::string& runnerState) = 0;
     /// A compacted sample, kept for the shear tests.
     virtual void sample(double pressure, const SimulationState& state) = 0;
+    /// The void cells of the configuration of checkpoint `name` (written just before).
+    virtual void voidCells(const std::string& name, const VoidCellSet& cells) {
+        (void)name;
+        (void)cells;
+    }
 };
 
 /// What a run needs to continue from a checkpoint (read back from the run file).

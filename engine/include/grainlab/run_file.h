@@ -51,6 +51,9 @@ public:
                     const std::string& runnerState) override;
     /// Writes /samples/<pressure>Pa (e.g. /samples/15000Pa) and flushes.
     void sample(double pressure, const SimulationState& state) override;
+    /// Writes /checkpoints/<name>/void_cells: one row per void cell (valence, area, elongation,
+    /// direction, centroid, its grains as CSR) and the valence histogram.
+    void voidCells(const std::string& name, const VoidCellSet& cells) override;
     /// Flushes everything written so far to disk.
     void flush();
 
