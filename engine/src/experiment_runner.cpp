@@ -460,7 +460,11 @@ RunProgress ExperimentRunner::progress() const {
     RunProgress p;
     p.stage = m.stageName();
     p.test = m.currentSeries >= 0 ? m.series[m.currentSeries].test : "";
-    p.axialStrain = m.phase == Phase::Shear ? m.eps1() : 0.0;
+    // eps1 of the current test: during its shear, and its final value once the run is done.
+    p.axialStrain = (m.phase == Phase::Shear || m.phase == Phase::Done) &&
+                            !m.config.shear.pressures.empty()
+                        ? m.eps1()
+                        : 0.0;
     p.fraction = m.fraction();
     p.step = m.sim->stepCount();
     p.finished = m.phase == Phase::Done;
