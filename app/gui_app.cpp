@@ -1,0 +1,34 @@
+// See gui_app.h.
+#include "gui_app.h"
+
+#include <QApplication>
+#include <QGuiApplication>
+
+#include <fmt/format.h>
+
+#include "gui_main_window.h"
+
+namespace grainlab {
+
+int runGui(int argc, char** argv, const std::string& experimentPath) {
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("GrainLab"));
+    QApplication::setApplicationVersion(QStringLiteral(GRAINLAB_VERSION));
+    // The scene is drawn with QPainter (SceneView) on every platform, so the offscreen platform
+    // (no OpenGL) works as well as a desktop one.
+    ui::MainWindow window;
+    const std::string path =
+        experimentPath.empty()
+            ? std::string(GRAINLAB_SOURCE_DIR "/resources/experiments/quick.json")
+            : experimentPath;
+    QString error;
+    if (!window.openExperiment(QString::fromStdString(path), &error)) {
+        fmt::print(stderr, "grainlab: {}\n", error.toStdString());
+        return 1;
+    }
+    window.resize(1500, 950);
+    window.show();
+    return QApplication::exec();
+}
+
+} // namespace grainlab

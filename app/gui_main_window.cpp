@@ -1,0 +1,542 @@
+// See gui_main_window.h.
+#include "gui_main_window.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenuBar>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSlider>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+#include "grainlab/csv_series.h"
+#include "grainlab/experiment_file.h"
+#include "grainlab/ui/charts_panel.h"
+#include "grainlab/ui/figure_export.h"
+#include "grainlab/ui/inspector_panel.h"
+#include "grainlab/ui/parameters_panel.h"
+#include "grainlab/ui/scene_view.h"
+
+namespace grainlab::ui {
+namespace {
+
+/// GUI refresh period: 30 frames per second. Each new scene costs the worker a snapshot and the
+/// GUI thread a redraw, both taken from the engine's processor time, so no faster than needed.
+constexpr int kFrameMs = 33;
+constexpr int kChartPeriodMs = 150; ///< charts are replotted at most this often while running
+
+QString formatDuration(double seconds) {
+    if (seconds < 0.0 || !std::isfinite(seconds)) {
+        return QStringLiteral("–");
+    }
+    const auto s = static_cast<qint64>(seconds + 0.5);
+    if (s >= 3600) {
+        return QStringLiteral("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60);
+    }
+    if (s >= 60) {
+        return QStringLiteral("%1 min %2 s").arg(s / 60).arg(s % 60);
+    }
+    return QStringLiteral("%1 s").arg(s);
+}
+
+QString stateName(RunState state) {
+    switch (state) {
+    case RunState::Idle:
+        return QObject::tr("ready");
+    case RunState::Running:
+        return QObject::tr("running");
+    case RunState::Paused:
+        return QObject::tr("paused");
+    case RunState::Finished:
+        return QObject::tr("finished");
+    case RunState::Failed:
+        return QObject::tr("failed");
+    }
+    return {};
+}
+
+} // namespace
+
+MainWindow::MainWindow(RunMaker maker, QWidget* parent)
+    : QMainWindow(parent), maker_(std::move(maker)),
+      controller_(std::make_unique<SimulationController>()), scene_(new SceneView),
+      charts_(new ChartsPanel), inspector_(new InspectorPanel), parameters_(new ParametersPanel),
+      stage_(new QLabel), speed_(new QLabel), eta_(new QLabel), cursor_(new QLabel),
+      error_(new QLabel), progress_(new QProgressBar), scrubBar_(new QWidget),
+      scrub_(new QSlider(Qt::Horizontal)), scrubLabel_(new QLabel) {
+    setWindowTitle(QStringLiteral("GrainLab"));
+    // OpenGL draws the grains where the platform has it; the offscreen platform (tests, CI) and
+    // GRAINLAB_NO_OPENGL=1 keep the QPainter view, which draws the same picture.
+    if (qEnvironmentVariableIsEmpty("GRAINLAB_NO_OPENGL")) {
+        scene_->setUseOpenGL(true);
+    }
+    buildActions();
+    buildMenus();
+
+    // Scene (with its display options) | charts over inspector and parameters.
+    auto* sceneSide = new QWidget;
+    auto* sceneLayout = new QVBoxLayout(sceneSide);
+    sceneLayout->setContentsMargins(0, 0, 0, 0);
+    sceneLayout->addWidget(buildSceneOptions());
+    sceneLayout->addWidget(scene_, 1);
+    auto* scrubRow = new QHBoxLayout(scrubBar_);
+    scrubRow->setContentsMargins(4, 2, 4, 2);
+    scrubRow->addWidget(new QLabel(tr("Run file:")));
+    scrubRow->addWidget(scrub_, 1);
+    scrubRow->addWidget(scrubLabel_);
+    scrubBar_->hide();
+    sceneLayout->addWidget(scrubBar_);
+    connect(scrub_, &QSlider::valueChanged, this, &MainWindow::showRunFileCheckpoint);
+    tabs_ = new QTabWidget;
+    tabs_->addTab(inspector_, tr("Inspector"));
+    tabs_->addTab(parameters_, tr("Parameters"));
+    tabs_->setCurrentWidget(parameters_);
+    auto* right = new QSplitter(Qt::Vertical);
+    right->addWidget(charts_);
+    right->addWidget(tabs_);
+    right->setStretchFactor(0, 3);
+    right->setStretchFactor(1, 1);
+    auto* split = new QSplitter(Qt::Horizontal);
+    split->addWidget(sceneSide);
+    split->addWidget(right);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 1);
+    setCentralWidget(split);
+
+    progress_->setRange(0, 1000);
+    progress_->setMaximumWidth(220);
+    progress_->setFormat(QStringLiteral("%p %"));
+    error_->setStyleSheet(QStringLiteral("color: #b00020"));
+    statusBar()->addWidget(stage_);
+    statusBar()->addWidget(error_, 1);
+    statusBar()->addPermanentWidget(cursor_);
+    statusBar()->addPermanentWidget(speed_);
+    statusBar()->addPermanentWidget(progress_);
+    statusBar()->addPermanentWidget(eta_);
+
+    connect(scene_, &SceneView::voidCellClicked, this, [this](int cell) {
+        inspector_->showVoidCell(scene_->snapshot(), cell);
+        tabs_->setCurrentWidget(inspector_);
+    });
+    connect(scene_, &SceneView::grainClicked, this, [this](int grain) {
+        inspector_->showGrain(scene_->snapshot(), grain);
+        if (grain >= 0) {
+            tabs_->setCurrentWidget(inspector_);
+        }
+    });
+    connect(scene_, &SceneView::cursorMoved, this, [this](double x1, double x2) {
+        cursor_->setText(
+            tr("x1 %1 mm, x2 %2 mm").arg(x1 * 1e3, 0, 'f', 2).arg(x2 * 1e3, 0, 'f', 2));
+    });
+    connect(charts_, &ChartsPanel::hoveredAxialStrain, this, [this](double eps1) {
+        cursor_->setText(tr("chart: ε1 = %1 %").arg(100.0 * eps1, 0, 'f', 3));
+        // With a run file shown, the scene follows the chart cursor to the nearest checkpoint
+        // of the test on screen.
+        if (runFile_ && viewingFile_ && scene_->snapshot()) {
+            const int k = nearestCheckpoint(*runFile_, scene_->snapshot()->test, eps1);
+            if (k >= 0) {
+                scrub_->setValue(k);
+            }
+        }
+    });
+    connect(parameters_, &ParametersPanel::edited, this,
+            [this](bool) { updateControls(controller_->status().state); });
+    connect(controller_.get(), &SimulationController::stateChanged, this,
+            [this](RunState) { refresh(); });
+    controller_->setPublishInterval(kFrameMs / 1000.0);
+    connect(&timer_, &QTimer::timeout, this, &MainWindow::refresh);
+    timer_.start(kFrameMs);
+    updateControls(RunState::Idle);
+}
+
+MainWindow::~MainWindow() {
+    timer_.stop();
+    controller_.reset(); // joins the worker before the panels go
+}
+
+void MainWindow::buildActions() {
+    open_ = new QAction(tr("&Open experiment…"), this);
+    open_->setShortcut(QKeySequence::Open);
+    connect(open_, &QAction::triggered, this, &MainWindow::openExperimentDialog);
+    start_ = new QAction(tr("Start"), this);
+    start_->setShortcut(Qt::Key_F5);
+    start_->setToolTip(tr("Start or resume the run (F5)"));
+    connect(start_, &QAction::triggered, this, &MainWindow::startRun);
+    pause_ = new QAction(tr("Pause"), this);
+    pause_->setShortcut(Qt::Key_F6);
+    connect(pause_, &QAction::triggered, this, &MainWindow::pauseRun);
+    step_ = new QAction(tr("Step"), this);
+    step_->setShortcut(Qt::Key_F7);
+    step_->setToolTip(tr("Advance by the given number of steps, then pause (F7)"));
+    connect(step_, &QAction::triggered, this, &MainWindow::stepRun);
+    stop_ = new QAction(tr("Stop"), this);
+    stop_->setToolTip(tr("End the run; Start then begins a new one"));
+    connect(stop_, &QAction::triggered, this, &MainWindow::stopRun);
+
+    stepSize_ = new QSpinBox;
+    stepSize_->setRange(1, 10000000);
+    stepSize_->setValue(100);
+    stepSize_->setSuffix(tr(" steps"));
+    stepSize_->setToolTip(tr("Steps per click on Step"));
+
+    auto* bar = addToolBar(tr("Run"));
+    bar->setObjectName(QStringLiteral("runToolBar"));
+    bar->addAction(open_);
+    bar->addSeparator();
+    bar->addAction(start_);
+    bar->addAction(pause_);
+    bar->addAction(step_);
+    bar->addWidget(stepSize_);
+    bar->addAction(stop_);
+}
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(open_);
+    file->addAction(tr("Open &run file…"), this, &MainWindow::openRunFileDialog);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    QMenu* run = menuBar()->addMenu(tr("&Run"));
+    run->addActions({start_, pause_, step_, stop_});
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(tr("&Fit the cell (0 or Home in the scene)"), scene_, &SceneView::fitToCell);
+    QMenu* exports = menuBar()->addMenu(tr("&Export"));
+    exports->addAction(tr("&Scene as PNG, SVG or PDF…"), this, &MainWindow::exportSceneDialog);
+    QMenu* chartMenu = exports->addMenu(tr("&Chart"));
+    for (int k = 0; k < charts_->chartCount(); ++k) {
+        chartMenu->addAction(charts_->definition(k).title + QStringLiteral("…"), this,
+                             [this, k] { exportChartDialog(k); });
+    }
+    exports->addAction(tr("Series as &CSV…"), this, &MainWindow::exportCsvDialog);
+    exports->addSeparator();
+    exports->addAction(tr("&Figure set into a folder…"), this, &MainWindow::exportFigureSetDialog);
+}
+
+QWidget* MainWindow::buildSceneOptions() {
+    auto* box = new QWidget;
+    auto* row = new QHBoxLayout(box);
+    row->setContentsMargins(4, 2, 4, 2);
+    colouring_ = new QComboBox;
+    colouring_->addItems(
+        {tr("size"), tr("rotation"), tr("coordination"), tr("load-bearing"), tr("uniform")});
+    forceChains_ = new QComboBox;
+    forceChains_->addItems({tr("no force chains"), tr("strong force chains"), tr("all forces")});
+    voidCells_ = new QComboBox;
+    voidCells_->addItems(
+        {tr("no void cells"), tr("void cells by valence"), tr("void cells by area")});
+    rose_ = new QCheckBox(tr("normal rose"));
+    images_ = new QCheckBox(tr("periodic images"));
+    auto* fit = new QPushButton(tr("Fit"));
+    row->addWidget(new QLabel(tr("Colour:")));
+    row->addWidget(colouring_);
+    row->addWidget(forceChains_);
+    row->addWidget(voidCells_);
+    row->addWidget(rose_);
+    row->addWidget(images_);
+    row->addStretch(1);
+    row->addWidget(fit);
+    connect(colouring_, &QComboBox::currentIndexChanged, this, &MainWindow::applySceneOptions);
+    connect(forceChains_, &QComboBox::currentIndexChanged, this, &MainWindow::applySceneOptions);
+    connect(voidCells_, &QComboBox::currentIndexChanged, this, &MainWindow::applySceneOptions);
+    connect(rose_, &QCheckBox::toggled, this, &MainWindow::applySceneOptions);
+    connect(images_, &QCheckBox::toggled, this, [this] {
+        applySceneOptions();
+        scene_->fitToCell();
+    });
+    connect(fit, &QPushButton::clicked, scene_, &SceneView::fitToCell);
+    return box;
+}
+
+void MainWindow::applySceneOptions() {
+    SceneOptions o = scene_->renderer().options();
+    o.colouring = static_cast<GrainColouring>(colouring_->currentIndex());
+    o.forceChains = static_cast<ForceChains>(forceChains_->currentIndex());
+    o.voidCells = static_cast<VoidCellShading>(voidCells_->currentIndex());
+    o.contactRose = rose_->isChecked();
+    o.periodicImages = images_->isChecked();
+    scene_->setOptions(o);
+}
+
+bool MainWindow::openExperiment(const QString& path, QString* error) {
+    try {
+        setExperiment(readExperimentFile(path.toStdString()));
+        return true;
+    } catch (const std::exception& e) {
+        if (error) {
+            *error = QString::fromStdString(e.what());
+        }
+        return false;
+    }
+}
+
+void MainWindow::setExperiment(const ExperimentConfig& config) {
+    controller_->stop();
+    experiment_ = config;
+    parameters_->setExperiment(config);
+    const QString source =
+        config.sourcePath.empty()
+            ? QString()
+            : QStringLiteral(" — %1").arg(QString::fromStdString(config.sourcePath));
+    setWindowTitle(
+        QStringLiteral("GrainLab — %1%2").arg(QString::fromStdString(config.name), source));
+}
+
+void MainWindow::startRun() {
+    if (controller_->status().state == RunState::Idle ||
+        controller_->status().state == RunState::Failed ||
+        controller_->status().state == RunState::Finished) {
+        if (!parameters_->valid()) {
+            showError(parameters_->problem());
+            return;
+        }
+        if (controller_->status().state == RunState::Finished) {
+            controller_->stop();
+        }
+        const ExperimentConfig config = parameters_->applied();
+        RunMaker maker = maker_;
+        controller_->setRunFactory([maker, config] { return maker(config); });
+    }
+    error_->clear();
+    viewingFile_ = false;
+    controller_->start();
+    updateControls(RunState::Running);
+}
+
+void MainWindow::pauseRun() {
+    controller_->pause();
+}
+
+void MainWindow::stepRun() {
+    if (controller_->status().state == RunState::Idle ||
+        controller_->status().state == RunState::Failed) {
+        if (!parameters_->valid()) {
+            showError(parameters_->problem());
+            return;
+        }
+        const ExperimentConfig config = parameters_->applied();
+        RunMaker maker = maker_;
+        controller_->setRunFactory([maker, config] { return maker(config); });
+    }
+    viewingFile_ = false;
+    controller_->step(stepSize_->value());
+}
+
+void MainWindow::stopRun() {
+    controller_->stop();
+}
+
+void MainWindow::showError(const QString& message) {
+    error_->setText(message);
+    statusBar()->showMessage(message, 10000);
+}
+
+void MainWindow::updateControls(RunState state) {
+    const bool valid = parameters_->valid();
+    const bool hasRun = state == RunState::Running || state == RunState::Paused;
+    start_->setEnabled(state != RunState::Running && (hasRun || valid));
+    start_->setText(state == RunState::Paused ? tr("Resume") : tr("Start"));
+    pause_->setEnabled(state == RunState::Running);
+    step_->setEnabled(state != RunState::Running && (hasRun || valid));
+    stop_->setEnabled(state != RunState::Idle);
+    parameters_->setEnabled(!hasRun);
+    open_->setEnabled(state != RunState::Running);
+}
+
+void MainWindow::refresh() {
+    const RunStatus status = controller_->status();
+    const SnapshotPtr latest = controller_->latestSnapshot();
+    const auto nowMs = QDateTime::currentMSecsSinceEpoch();
+    if (latest && latest != shown_ && !viewingFile_) {
+        if (shown_ && shown_->step != latest->step) {
+            // Indices of grains and void cells refer to the snapshot they were picked in.
+            scene_->selectGrain(-1);
+            scene_->selectVoidCell(-1);
+        }
+        shown_ = latest;
+        scene_->setSnapshot(latest);
+        std::size_t rows = 0;
+        for (const auto& table : latest->series) {
+            rows += table.rows.size();
+        }
+        if (rows != chartedRows_ &&
+            (status.state != RunState::Running || nowMs - chartedAtMs_ >= kChartPeriodMs)) {
+            updateCharts(latest);
+            chartedRows_ = rows;
+            chartedAtMs_ = nowMs;
+        }
+    }
+    if (status.state != shownState_) {
+        shownState_ = status.state;
+        updateControls(status.state);
+        if (status.state == RunState::Failed) {
+            showError(tr("The run failed: %1").arg(QString::fromStdString(status.error)));
+        }
+    }
+    stage_->setText(
+        QStringLiteral("%1 · %2 · step %3 · ε1 = %4 %")
+            .arg(stateName(status.state),
+                 QString::fromStdString(status.progress.stage.empty() ? std::string("–")
+                                                                      : status.progress.stage))
+            .arg(status.progress.step)
+            .arg(100.0 * status.progress.axialStrain, 0, 'f', 3));
+    speed_->setText(tr("%1 steps/s · ε1 %2 %/s")
+                        .arg(status.stepsPerSecond, 0, 'f', 0)
+                        .arg(100.0 * status.strainPerSecond, 0, 'g', 3));
+    progress_->setValue(static_cast<int>(1000.0 * std::clamp(status.progress.fraction, 0.0, 1.0)));
+    eta_->setText(tr("ETA %1").arg(status.state == RunState::Running
+                                       ? formatDuration(status.etaSeconds)
+                                       : QStringLiteral("–")));
+}
+
+QStringList MainWindow::exportFigureSet(const QString& folder, QString* error) {
+    const SnapshotPtr snapshot = scene_->snapshot();
+    static const std::vector<SeriesTable> none;
+    return ui::exportFigureSet(folder, scene_, charts_, snapshot ? snapshot->series : none, {},
+                               error);
+}
+
+void MainWindow::updateCharts(const SnapshotPtr& live) {
+    std::vector<SeriesTable> tables;
+    if (live) {
+        tables = live->series;
+    }
+    if (runFile_) {
+        tables.insert(tables.end(), runFile_->series.begin(), runFile_->series.end());
+    }
+    charts_->setSeries(tables);
+}
+
+bool MainWindow::openRunFile(const QString& path, QString* error) {
+    try {
+        runFile_ = ui::openRunFile(path.toStdString());
+    } catch (const std::exception& e) {
+        if (error) {
+            *error = QString::fromStdString(e.what());
+        }
+        return false;
+    }
+    controller_->pause();
+    const int count = static_cast<int>(runFile_->checkpoints.size());
+    scrubBar_->setVisible(count > 0);
+    {
+        const QSignalBlocker block(scrub_);
+        scrub_->setRange(0, std::max(0, count - 1));
+        scrub_->setValue(std::max(0, count - 1));
+    }
+    updateCharts(controller_->latestSnapshot());
+    if (count > 0) {
+        showRunFileCheckpoint(count - 1);
+    }
+    return true;
+}
+
+void MainWindow::showRunFileCheckpoint(int index) {
+    if (!runFile_ || index < 0 || index >= static_cast<int>(runFile_->checkpoints.size())) {
+        return;
+    }
+    try {
+        const SnapshotPtr snapshot = runFileSnapshot(*runFile_, static_cast<std::size_t>(index));
+        viewingFile_ = true;
+        scene_->selectGrain(-1);
+        scene_->selectVoidCell(-1);
+        scene_->setSnapshot(snapshot);
+        scrubLabel_->setText(tr("%1 / %2 · %3 · step %4 · ε1 = %5 %")
+                                 .arg(index + 1)
+                                 .arg(runFile_->checkpoints.size())
+                                 .arg(QString::fromStdString(snapshot->stage))
+                                 .arg(snapshot->step)
+                                 .arg(100.0 * snapshot->axialStrain, 0, 'f', 3));
+    } catch (const std::exception& e) {
+        showError(QString::fromStdString(e.what()));
+    }
+}
+
+void MainWindow::openRunFileDialog() {
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open run file"), QString(), tr("Run files (*.h5)"));
+    QString error;
+    if (!path.isEmpty() && !openRunFile(path, &error)) {
+        showError(error);
+    }
+}
+
+void MainWindow::openExperimentDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open experiment"), QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/experiments"),
+        tr("Experiment files (*.json)"));
+    if (path.isEmpty()) {
+        return;
+    }
+    QString error;
+    if (!openExperiment(path, &error)) {
+        showError(error);
+    }
+}
+
+void MainWindow::exportSceneDialog() {
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export the scene"), QStringLiteral("scene.png"),
+        tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"));
+    QString error;
+    if (!path.isEmpty() && !exportScene(*scene_, path, scene_->size() * 2, &error)) {
+        showError(error);
+    }
+}
+
+void MainWindow::exportChartDialog(int chart) {
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export the chart"), charts_->definition(chart).name + QStringLiteral(".png"),
+        tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"));
+    QString error;
+    if (!path.isEmpty() && !charts_->exportChart(chart, path, QSize(1200, 800), &error)) {
+        showError(error);
+    }
+}
+
+void MainWindow::exportCsvDialog() {
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Write the series into"));
+    if (folder.isEmpty() || !scene_->snapshot()) {
+        return;
+    }
+    for (const SeriesTable& table : scene_->snapshot()->series) {
+        try {
+            writeSeriesCsv(
+                table,
+                QDir(folder).filePath(QString::fromStdString(table.test) + ".csv").toStdString());
+        } catch (const std::exception& e) {
+            showError(QString::fromStdString(e.what()));
+            return;
+        }
+    }
+}
+
+void MainWindow::exportFigureSetDialog() {
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Write the figure set into"));
+    if (folder.isEmpty()) {
+        return;
+    }
+    QString error;
+    const QStringList files = exportFigureSet(folder, &error);
+    if (!error.isEmpty()) {
+        showError(error);
+    } else {
+        statusBar()->showMessage(tr("%1 files written to %2").arg(files.size()).arg(folder), 8000);
+    }
+}
+
+} // namespace grainlab::ui

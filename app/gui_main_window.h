@@ -1,0 +1,135 @@
+#pragma once
+// The main window: assembles the panels — the live scene with its display options, the charts,
+// the inspector, the run controls and the editable parameters — and wires them to the simulation
+// controller. It computes nothing itself: a 33 ms timer picks the controller's newest snapshot
+// and hands it to the panels (charts at most every 150 ms while running). GUI thread only.
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <QMainWindow>
+#include <QTimer>
+
+#include "grainlab/experiment.h"
+#include "gui_controller.h"
+#include "gui_run.h"
+#include "gui_run_file.h"
+
+class QAction;
+class QComboBox;
+class QLabel;
+class QProgressBar;
+class QSpinBox;
+class QCheckBox;
+class QTabWidget;
+class QSlider;
+
+namespace grainlab::ui {
+
+class ChartsPanel;
+class InspectorPanel;
+class ParametersPanel;
+class SceneView;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    /// Makes the run for an experiment when Start or Step is pressed with no run.
+    using RunMaker = std::function<std::unique_ptr<SteppedRun>(const ExperimentConfig&)>;
+
+    explicit MainWindow(RunMaker maker = makeExperimentRun, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    /// Reads an experiment file and shows its parameters (stops a current run). Returns false
+    /// and sets `error` when the file is invalid.
+    bool openExperiment(const QString& path, QString* error = nullptr);
+    void setExperiment(const ExperimentConfig& config);
+    /// Opens a run file: its series join the charts and its checkpoints can be scrubbed with the
+    /// slider under the scene (the live run is paused). Returns false and sets `error` on failure.
+    bool openRunFile(const QString& path, QString* error = nullptr);
+    /// Shows checkpoint `index` of the open run file in the scene.
+    void showRunFileCheckpoint(int index);
+
+    /// Takes the newest snapshot and status from the controller now (what the timer does).
+    void refresh();
+
+    /// Exports (no dialogs): figure set, the scene, one chart, every series as CSV.
+    QStringList exportFigureSet(const QString& folder, QString* error = nullptr);
+
+    SimulationController& controller() { return *controller_; }
+    SceneView* sceneView() const { return scene_; }
+    ChartsPanel* chartsPanel() const { return charts_; }
+    InspectorPanel* inspector() const { return inspector_; }
+    ParametersPanel* parametersPanel() const { return parameters_; }
+    QAction* startAction() const { return start_; }
+    QAction* pauseAction() const { return pause_; }
+    QAction* stepAction() const { return step_; }
+    QAction* stopAction() const { return stop_; }
+    QSpinBox* stepSizeEdit() const { return stepSize_; }
+    QLabel* speedLabel() const { return speed_; }
+    QProgressBar* progressBar() const { return progress_; }
+    QSlider* runFileSlider() const { return scrub_; }
+
+public slots:
+    void startRun();
+    void pauseRun();
+    void stepRun();
+    void stopRun();
+
+private:
+    void buildActions();
+    void buildMenus();
+    QWidget* buildSceneOptions();
+    void applySceneOptions();
+    void updateControls(RunState state);
+    void openExperimentDialog();
+    void exportSceneDialog();
+    void exportChartDialog(int chart);
+    void exportCsvDialog();
+    void exportFigureSetDialog();
+    void showError(const QString& message);
+    void openRunFileDialog();
+    /// The live run's tables followed by the open run file's.
+    void updateCharts(const SnapshotPtr& live);
+
+    RunMaker maker_;
+    ExperimentConfig experiment_;
+    std::unique_ptr<SimulationController> controller_;
+    SnapshotPtr shown_;
+    std::int64_t chartedAtMs_ = 0;
+    std::size_t chartedRows_ = 0;
+    RunState shownState_ = RunState::Idle;
+    std::optional<RunFileView> runFile_;
+    bool viewingFile_ = false; ///< the scene shows a run file's checkpoint, not the live run
+    QTimer timer_;
+
+    SceneView* scene_;
+    ChartsPanel* charts_;
+    InspectorPanel* inspector_;
+    ParametersPanel* parameters_;
+    QTabWidget* tabs_;
+    QComboBox* colouring_ = nullptr;
+    QComboBox* forceChains_ = nullptr;
+    QComboBox* voidCells_ = nullptr;
+    QCheckBox* rose_ = nullptr;
+    QCheckBox* images_ = nullptr;
+    QAction* open_ = nullptr;
+    QAction* start_ = nullptr;
+    QAction* pause_ = nullptr;
+    QAction* step_ = nullptr;
+    QAction* stop_ = nullptr;
+    QSpinBox* stepSize_ = nullptr;
+    QLabel* stage_;
+    QLabel* speed_;
+    QLabel* eta_;
+    QLabel* cursor_;
+    QLabel* error_;
+    QProgressBar* progress_;
+    QWidget* scrubBar_;
+    QSlider* scrub_;
+    QLabel* scrubLabel_;
+};
+
+} // namespace grainlab::ui

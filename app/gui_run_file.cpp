@@ -1,0 +1,134 @@
+// See gui_run_file.h.
+#include "gui_run_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+
+#include "grainlab/measures.h"
+#include "grainlab/run_file.h"
+#include "grainlab/simulation.h"
+
+namespace grainlab::ui {
+namespace {
+
+/// "000012-shear-15-kPa-step88000" -> "shear 15 kPa" (the runner's checkpoint names).
+std::string stageOfCheckpoint(const std::string& name) {
+    std::string stage = name;
+    const auto dash = stage.find('-');
+    if (dash != std::string::npos && dash < 8) {
+        stage = stage.substr(dash + 1);
+    }
+    const auto step = stage.rfind("-step");
+    if (step != std::string::npos) {
+        stage = stage.substr(0, step);
+    }
+    std::replace(stage.begin(), stage.end(), '-', ' ');
+    return stage;
+}
+
+} // namespace
+
+RunFileView openRunFile(const std::string& path) {
+    RunFileView view;
+    view.path = path;
+    view.checkpoints = listCheckpoints(path);
+    const std::string prefix = std::filesystem::path(path).filename().string() + ": ";
+    for (const std::string& test : listTests(path)) {
+        SeriesTable table = readSeries(path, test);
+        table.test = prefix + test;
+        view.series.push_back(std::move(table));
+    }
+    for (const std::string& name : view.checkpoints) {
+        const auto at = name.rfind("-step");
+        const std::int64_t step = at == std::string::npos ? -1 : std::atoll(name.c_str() + at + 5);
+        const std::string stage = stageOfCheckpoint(name);
+        std::string test;
+        double strain = std::numeric_limits<double>::quiet_NaN();
+        for (const SeriesTable& table : view.series) {
+            const int stepColumn = table.column("step"), eps1 = table.column("eps1");
+            if (stepColumn < 0 || eps1 < 0) {
+                continue;
+            }
+            for (std::size_t r = 0; r < table.rows.size(); ++r) {
+                if (table.rows[r][stepColumn] == double(step) &&
+                    (r >= table.stages.size() || table.stages[r] == stage)) {
+                    strain = table.rows[r][eps1];
+                    test = table.test;
+                }
+            }
+        }
+        view.checkpointStep.push_back(step);
+        view.checkpointStage.push_back(stage);
+        view.checkpointTest.push_back(test);
+        view.checkpointStrain.push_back(strain);
+    }
+    return view;
+}
+
+SnapshotPtr runFileSnapshot(const RunFileView& file, std::size_t index) {
+    if (index >= file.checkpoints.size()) {
+        throw std::runtime_error(file.path + ": no checkpoint " + std::to_string(index));
+    }
+    const std::string& name = file.checkpoints[index];
+    Simulation sim(readState(file.path, checkpointGroup(name)));
+    auto s = std::make_shared<Snapshot>();
+    s->step = sim.stepCount();
+    s->time = sim.time();
+    s->stage = stageOfCheckpoint(name);
+    const SimulationState& state = sim.stateRef();
+    s->shapes = state.shapes;
+    s->shape = state.grains.shape;
+    s->network = sim.contactNetwork();
+    s->x1 = s->network.x1;
+    s->x2 = s->network.x2;
+    s->theta = state.grains.theta;
+    s->rotation.assign(s->theta.size(), 0.0);
+    const MeasureSet measures = computeMeasures(s->network);
+    s->loadBearing = measures.loadBearing.grainInGraph;
+    for (const VoidCell& c : measures.voidCells.cells) {
+        VoidCellView v;
+        v.grains = c.grains;
+        v.area = c.area;
+        v.elongation = c.elongation;
+        v.direction = c.direction;
+        v.centroid1 = c.centroid1;
+        v.centroid2 = c.centroid2;
+        v.valence = c.valence;
+        for (std::size_t k = 0; k < c.vertices1.size(); ++k) {
+            v.x1.push_back(c.centroid1 + c.vertices1[k]);
+            v.x2.push_back(c.centroid2 + c.vertices2[k]);
+        }
+        s->voidCells.push_back(std::move(v));
+    }
+    if (index < file.checkpointStrain.size() && !std::isnan(file.checkpointStrain[index])) {
+        s->axialStrain = file.checkpointStrain[index];
+        s->test = file.checkpointTest[index];
+    }
+    s->progress =
+        file.checkpoints.size() > 1 ? double(index) / double(file.checkpoints.size() - 1) : 1.0;
+    s->series = file.series;
+    return s;
+}
+
+int nearestCheckpoint(const RunFileView& file, const std::string& test, double eps1) {
+    int best = -1;
+    double distance = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < file.checkpointStrain.size(); ++k) {
+        const double strain = file.checkpointStrain[k];
+        if (std::isnan(strain) || (!test.empty() && file.checkpointTest[k] != test) ||
+            file.checkpointStage[k].rfind("shear", 0) != 0) {
+            continue;
+        }
+        if (std::fabs(strain - eps1) < distance) {
+            distance = std::fabs(strain - eps1);
+            best = static_cast<int>(k);
+        }
+    }
+    return best;
+}
+
+} // namespace grainlab::ui

@@ -1,0 +1,99 @@
+// The charts panel plots the SPEC §4 columns of every test in its own colour, in display units,
+// replaces curves when rows are added, drops tests that are gone, and reports the eps1 under the
+// cursor.
+#include <QMouseEvent>
+#include <QSignalSpy>
+#include <QTest>
+#include <QValueAxis>
+
+#include <gtest/gtest.h>
+
+#include "grainlab/ui/charts_panel.h"
+#include "test_scenes.h"
+
+namespace grainlab::ui {
+namespace {
+
+int chartIndex(const ChartsPanel& panel, const QString& name) {
+    for (int k = 0; k < panel.chartCount(); ++k) {
+        if (panel.definition(k).name == name) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+TEST(ChartsPanel, OverlaysTestsInTheirColoursInDisplayUnits) {
+    ChartsPanel panel;
+    panel.resize(900, 900);
+    const std::vector<SeriesTable> tables{testing::makeSeries("p15kPa", 200, 0.5),
+                                          testing::makeSeries("p100kPa", 150, 0.4)};
+    panel.setSeries(tables);
+    ASSERT_EQ(panel.chartCount(), 6);
+    const int q = chartIndex(panel, QStringLiteral("q_over_p"));
+    const int v = chartIndex(panel, QStringLiteral("epsv"));
+    const int f = chartIndex(panel, QStringLiteral("fabric"));
+    const int z = chartIndex(panel, QStringLiteral("z_eff_vs_void_cells"));
+    ASSERT_GE(q, 0);
+    const auto points = panel.curvePoints(q, "p15kPa", "q_over_p");
+    ASSERT_EQ(points.size(), 200);
+    EXPECT_DOUBLE_EQ(points.back().x(), 100.0 * tables[0].rows.back()[0]); // eps1 in percent
+    EXPECT_DOUBLE_EQ(points.back().y(), tables[0].rows.back()[2]);
+    EXPECT_DOUBLE_EQ(panel.curvePoints(v, "p100kPa", "epsv").back().y(),
+                     100.0 * tables[1].rows.back()[1]);
+    EXPECT_EQ(panel.curvePoints(f, "p15kPa", "Hsdev").size(), 200);
+    EXPECT_EQ(panel.curvePoints(f, "p15kPa", "Hwdev").size(), 200);
+    EXPECT_EQ(panel.curvePoints(z, "p100kPa", "Z_eff").size(), 150);
+    EXPECT_NE(panel.testColour("p15kPa"), panel.testColour("p100kPa"));
+    // Axes are labelled with units and cover the data.
+    auto* x = static_cast<QValueAxis*>(panel.chartView(q)->chart()->axes(Qt::Horizontal).front());
+    auto* y = static_cast<QValueAxis*>(panel.chartView(q)->chart()->axes(Qt::Vertical).front());
+    EXPECT_EQ(x->titleText(), QStringLiteral("ε1 [%]"));
+    EXPECT_EQ(y->titleText(), QStringLiteral("q/p [-]"));
+    EXPECT_LE(x->min(), 0.0);
+    EXPECT_GE(x->max(), 15.0);
+    EXPECT_GE(y->max(), 0.49);
+
+    // More rows: replaced; a test gone: removed.
+    panel.setSeries({testing::makeSeries("p15kPa", 300, 0.5)});
+    EXPECT_EQ(panel.curvePoints(q, "p15kPa", "q_over_p").size(), 300);
+    EXPECT_TRUE(panel.curvePoints(q, "p100kPa", "q_over_p").isEmpty());
+    EXPECT_EQ(panel.chartView(q)->chart()->series().size(), 1);
+}
+
+TEST(ChartsPanel, ShearOnlySkipsCompactionRows) {
+    ChartsPanel panel;
+    SeriesTable t = testing::makeSeries("p50kPa", 10, 0.5);
+    t.stages[0] = t.stages[1] = "compaction 50 kPa";
+    panel.setSeries({t});
+    EXPECT_EQ(panel.curvePoints(0, "p50kPa", "q_over_p").size(), 8);
+    panel.setShearOnly(false);
+    panel.setSeries({t});
+    EXPECT_EQ(panel.curvePoints(0, "p50kPa", "q_over_p").size(), 10);
+}
+
+TEST(ChartsPanel, HoverReportsAxialStrainAndMarksEveryStrainChart) {
+    ChartsPanel panel;
+    panel.resize(900, 900);
+    panel.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
+    panel.setSeries({testing::makeSeries("p15kPa", 200, 0.5)});
+    QApplication::processEvents();
+    HoverChartView* view = panel.chartView(0);
+    QSignalSpy spy(&panel, &ChartsPanel::hoveredAxialStrain);
+    const QRectF area = view->chart()->plotArea();
+    const QPointF target = view->chart()->mapToPosition(QPointF(5.0, 0.3)); // eps1 = 5 %
+    ASSERT_TRUE(area.contains(target));
+    // A synthetic move event (QTest::mouseMove goes through the window system's cursor, which
+    // is asynchronous on a real X server).
+    const QPointF local = view->mapFromScene(target);
+    QMouseEvent move(QEvent::MouseMove, local, view->viewport()->mapToGlobal(local), Qt::NoButton,
+                     Qt::NoButton, Qt::NoModifier);
+    QApplication::sendEvent(view->viewport(), &move);
+    ASSERT_GE(spy.count(), 1);
+    EXPECT_NEAR(spy.back().front().toDouble(), 0.05, 0.002);
+    EXPECT_NEAR(panel.chartView(1)->marker(), 5.0, 0.2);
+}
+
+} // namespace
+} // namespace grainlab::ui

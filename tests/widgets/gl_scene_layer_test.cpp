@@ -1,0 +1,126 @@
+// The OpenGL layer draws the same grains as the QPainter renderer: grain colour at every grain
+// centre, the cell fill far from every grain. Runs where OpenGL 3.3 exists (e.g. under
+// `xvfb-run`); skipped on the offscreen platform, which has none. Also prints the frame time of
+// the reference assembly's 8450 ovals.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include <QDir>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+#include "grainlab/ui/gl_scene_layer.h"
+#include "grainlab/ui/scene_view.h"
+#include "test_scenes.h"
+
+namespace grainlab::ui {
+namespace {
+
+bool near(QRgb a, const QColor& b, int tolerance = 3) {
+    return std::abs(qRed(a) - b.red()) <= tolerance &&
+           std::abs(qGreen(a) - b.green()) <= tolerance &&
+           std::abs(qBlue(a) - b.blue()) <= tolerance;
+}
+
+TEST(GlSceneLayer, DrawsGrainsWhereTheSnapshotHasThem) {
+    if (!SceneView::openGLAvailable()) {
+        GTEST_SKIP() << "no OpenGL 3.3 on platform "
+                     << QGuiApplication::platformName().toStdString();
+    }
+    const SnapshotPtr s = testing::makeCompactedSnapshot();
+    SceneView view;
+    view.resize(700, 700);
+    ASSERT_TRUE(view.setUseOpenGL(true));
+    SceneOptions options = view.renderer().options();
+    options.caption = options.scaleBar = false;
+    options.periodicImages = true;
+    view.setOptions(options);
+    view.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+    view.setSnapshot(s);
+    const QImage image = view.glLayer()->grabFramebuffer();
+    ASSERT_TRUE(view.glLayer()->shadersReady()) << view.glLayer()->failure().toStdString();
+    const SceneRenderer& r = view.renderer();
+    for (std::size_t g = 0; g < s->x1.size(); ++g) {
+        const QPoint p = r.view().toScreen(s->x1[g], s->x2[g]).toPoint();
+        EXPECT_TRUE(near(image.pixel(p), r.grainColour(static_cast<int>(g)))) << "grain " << g;
+    }
+    // Far from every grain and image: the cell fill. Inside a grain, near its outline: grain.
+    const CellMatrix& h = s->network.cell;
+    const double pixel = 1.0 / r.view().pixelsPerMetre();
+    int empty = 0, agree = 0, total = 0;
+    const QImage painted = view.renderImage();
+    QDir().mkpath(QStringLiteral("test-images"));
+    image.save(QStringLiteral("test-images/gl-layer.png"));
+    painted.save(QStringLiteral("test-images/gl-layer-qpainter.png"));
+    for (int i = 1; i < 60; ++i) {
+        for (int j = 1; j < 60; ++j) {
+            const double w1 = h[0] * i / 60.0 + h[2] * j / 60.0;
+            const double w2 = h[1] * i / 60.0 + h[3] * j / 60.0;
+            bool free = true;
+            for (std::size_t g = 0; g < s->x1.size() && free; ++g) {
+                for (int a = -1; a <= 1 && free; ++a) {
+                    for (int b = -1; b <= 1 && free; ++b) {
+                        free = std::hypot(w1 - s->x1[g] - h[0] * a - h[2] * b,
+                                          w2 - s->x2[g] - h[1] * a - h[3] * b) >
+                               s->shapes[s->shape[g]].halfWidth + 2.0 * pixel;
+                    }
+                }
+            }
+            const QPoint p = r.view().toScreen(w1, w2).toPoint();
+            if (free) {
+                ++empty;
+                EXPECT_TRUE(near(image.pixel(p), r.options().cellFill)) << p.x() << "," << p.y();
+            }
+            // Both views agree (within antialiasing) at most sample points.
+            ++total;
+            agree += near(image.pixel(p), QColor(painted.pixel(p)), 40);
+        }
+    }
+    EXPECT_GT(empty, 10);
+    EXPECT_GT(agree, 0.97 * total);
+}
+
+TEST(GlSceneLayer, FrameTimeOfTheReferenceAssembly) {
+    if (!SceneView::openGLAvailable()) {
+        GTEST_SKIP() << "no OpenGL 3.3";
+    }
+    AssemblySpec spec;
+    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 11);
+    const SimulationState state = generateGridAssembly(spec, SimulationParameters{});
+    auto s = std::make_shared<Snapshot>();
+    s->shapes = state.shapes;
+    s->shape = state.grains.shape;
+    s->x1 = state.grains.x1;
+    s->x2 = state.grains.x2;
+    s->theta = state.grains.theta;
+    s->network.cell = state.cell;
+    SceneView view;
+    view.resize(1000, 1000);
+    ASSERT_TRUE(view.setUseOpenGL(true));
+    view.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+    view.setSnapshot(s);
+    view.glLayer()->grabFramebuffer();
+    const auto t0 = std::chrono::steady_clock::now();
+    const int frames = 10;
+    for (int k = 0; k < frames; ++k) {
+        view.glLayer()->grabFramebuffer();
+    }
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() /
+        frames;
+    std::printf("[ frame time ] OpenGL layer (%s), 8450 ovals, 1000 x 1000: %.1f ms per frame "
+                "including read-back\n",
+                reinterpret_cast<const char*>(
+                    QOpenGLContext::currentContext()
+                        ? QOpenGLContext::currentContext()->functions()->glGetString(GL_RENDERER)
+                        : reinterpret_cast<const GLubyte*>("unknown")),
+                ms);
+    EXPECT_LT(ms, 1000.0);
+}
+
+} // namespace
+} // namespace grainlab::ui

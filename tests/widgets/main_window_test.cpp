@@ -1,0 +1,276 @@
+// The main window on a small real experiment (120 ovals, one confining pressure, shear to
+// 0.5 %): start, pause and step through the toolbar; a click at a void cell's centroid while
+// paused shows its valence and area in the inspector; the figure set is written from the window;
+// parameters are validated before a run. With GRAINLAB_WRITE_SCREENSHOTS=1 the last test also
+// writes the user guide's screenshots into docs/images/.
+#include <chrono>
+#include <cmath>
+
+#include <QComboBox>
+#include <QDir>
+#include <QImageReader>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QSlider>
+#include <QSpinBox>
+#include <QTest>
+#include <QToolBar>
+
+#include <gtest/gtest.h>
+
+#include "grainlab/experiment_file.h"
+#include "grainlab/run_file.h"
+#include "grainlab/ui/charts_panel.h"
+#include "grainlab/ui/inspector_panel.h"
+#include "grainlab/ui/parameters_panel.h"
+#include "grainlab/ui/scene_view.h"
+#include "gui_main_window.h"
+
+namespace grainlab::ui {
+namespace {
+
+ExperimentConfig smallExperiment() {
+    ExperimentConfig c =
+        readExperimentFile(GRAINLAB_SOURCE_DIR "/resources/experiments/quick.json");
+    c.assembly.grainCount = 120;
+    c.compaction.pressures = {15e3};
+    c.shear.pressures = {15e3};
+    c.shear.targetAxialStrain = 0.005;
+    c.parameters.threads = 1;
+    return c;
+}
+
+template <class Predicate>
+bool waitFor(Predicate done, int timeoutMs = 60000) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
+    while (!done()) {
+        if (std::chrono::steady_clock::now() > end) {
+            return false;
+        }
+        QTest::qWait(10);
+    }
+    return true;
+}
+
+/// Clicks the toolbar button of an action, like a user.
+void click(MainWindow& w, QAction* action) {
+    QToolBar* bar = w.findChild<QToolBar*>(QStringLiteral("runToolBar"));
+    ASSERT_NE(bar, nullptr);
+    QWidget* button = bar->widgetForAction(action);
+    ASSERT_NE(button, nullptr);
+    ASSERT_TRUE(button->isEnabled()) << action->text().toStdString();
+    QTest::mouseClick(button, Qt::LeftButton);
+}
+
+struct Fixture {
+    MainWindow window;
+    Fixture() {
+        window.setExperiment(smallExperiment());
+        window.resize(1400, 900);
+        window.show();
+    }
+    RunState state() { return window.controller().status().state; }
+    SnapshotPtr shown() { return window.sceneView()->snapshot(); }
+};
+
+TEST(MainWindow, StartPauseStepStop) {
+    Fixture f;
+    MainWindow& w = f.window;
+    EXPECT_FALSE(w.pauseAction()->isEnabled());
+    click(w, w.startAction());
+    ASSERT_TRUE(waitFor([&] {
+        return f.state() == RunState::Running && f.shown() &&
+               w.controller().status().publications >= 5;
+    }));
+    EXPECT_FALSE(w.parametersPanel()->isEnabled());
+    ASSERT_TRUE(waitFor([&] { return w.controller().status().stepsPerSecond > 0; }));
+    QTest::qWait(50);
+    EXPECT_TRUE(w.speedLabel()->text().contains(QStringLiteral("steps/s")));
+
+    click(w, w.pauseAction());
+    ASSERT_TRUE(waitFor([&] { return f.state() == RunState::Paused; }));
+    w.refresh();
+    const std::int64_t paused = f.shown()->step;
+    QTest::qWait(150);
+    w.refresh();
+    EXPECT_EQ(f.shown()->step, paused);
+    EXPECT_EQ(w.startAction()->text(), QStringLiteral("Resume"));
+
+    w.stepSizeEdit()->setValue(37);
+    click(w, w.stepAction());
+    ASSERT_TRUE(waitFor([&] {
+        w.refresh();
+        return f.shown()->step != paused;
+    }));
+    EXPECT_EQ(f.shown()->step, paused + 37);
+    EXPECT_EQ(f.state(), RunState::Paused);
+
+    click(w, w.stopAction());
+    ASSERT_TRUE(waitFor([&] { return f.state() == RunState::Idle; }));
+    w.refresh();
+    EXPECT_TRUE(w.parametersPanel()->isEnabled());
+    EXPECT_FALSE(w.stopAction()->isEnabled());
+}
+
+TEST(MainWindow, ClickAVoidCellWhilePausedAndExportTheFigureSet) {
+    Fixture f;
+    MainWindow& w = f.window;
+    click(w, w.startAction());
+    ASSERT_TRUE(waitFor([&] { return f.shown() && f.shown()->voidCells.size() >= 20; }));
+    click(w, w.pauseAction());
+    ASSERT_TRUE(waitFor([&] { return f.state() == RunState::Paused; }));
+    w.refresh();
+    auto* voids = w.findChildren<QComboBox*>().at(2);
+    voids->setCurrentIndex(1); // void cells by valence
+    const Snapshot& s = *f.shown();
+    int chosen = 0;
+    for (std::size_t v = 0; v < s.voidCells.size(); ++v) {
+        if (s.voidCells[v].area > s.voidCells[chosen].area) {
+            chosen = static_cast<int>(v);
+        }
+    }
+    const VoidCellView& cell = s.voidCells[chosen];
+    QTest::mouseClick(w.sceneView(), Qt::LeftButton, Qt::NoModifier,
+                      w.sceneView()->toWidget(cell.centroid1, cell.centroid2));
+    EXPECT_EQ(w.inspector()->title(), QStringLiteral("Void cell %1").arg(chosen));
+    EXPECT_EQ(w.inspector()->value(QStringLiteral("valence")), QString::number(cell.valence));
+    EXPECT_EQ(w.inspector()->value(QStringLiteral("area [mm²]")),
+              QString::number(cell.area * 1e6, 'g', 4));
+    EXPECT_TRUE(w.inspector()->isVisible());
+
+    QDir dir(QStringLiteral("test-images/window-figure-set"));
+    dir.removeRecursively();
+    QString error;
+    const QStringList files = w.exportFigureSet(dir.path(), &error);
+    EXPECT_TRUE(error.isEmpty()) << error.toStdString();
+    EXPECT_GE(files.size(), 3 * 7);
+    QImageReader scene(dir.filePath(QStringLiteral("scene.png")));
+    EXPECT_EQ(scene.size(), QSize(1200, 1200));
+    QImageReader chart(dir.filePath(QStringLiteral("q_over_p.png")));
+    EXPECT_EQ(chart.size(), QSize(1200, 800));
+    EXPECT_TRUE(QFile::exists(dir.filePath(QStringLiteral("fabric.svg"))));
+    EXPECT_TRUE(QFile::exists(dir.filePath(QStringLiteral("void_cells.pdf"))));
+}
+
+TEST(MainWindow, ParametersAreValidatedBeforeARun) {
+    Fixture f;
+    MainWindow& w = f.window;
+    ParametersPanel* p = w.parametersPanel();
+    EXPECT_TRUE(p->valid());
+    p->pressuresEdit()->setText(QStringLiteral("15, abc"));
+    EXPECT_FALSE(p->valid());
+    EXPECT_TRUE(p->problem().contains(QStringLiteral("abc")));
+    EXPECT_FALSE(w.startAction()->isEnabled());
+    p->pressuresEdit()->setText(QStringLiteral("25, 15"));
+    EXPECT_FALSE(p->valid());
+    EXPECT_TRUE(p->problem().contains(QStringLiteral("ascending")));
+    p->pressuresEdit()->setText(QStringLiteral("15, 25"));
+    p->grainCountEdit()->setValue(200);
+    p->frictionEdit()->setValue(0.3);
+    p->strainTargetEdit()->setValue(2.0);
+    ASSERT_TRUE(p->valid());
+    EXPECT_TRUE(w.startAction()->isEnabled());
+    const ExperimentConfig c = p->applied();
+    EXPECT_EQ(c.compaction.pressures, (std::vector<double>{15e3, 25e3}));
+    EXPECT_EQ(c.shear.pressures, (std::vector<double>{15e3, 25e3}));
+    EXPECT_EQ(c.assembly.grainCount, 200);
+    EXPECT_DOUBLE_EQ(c.shear.friction, 0.3);
+    EXPECT_DOUBLE_EQ(c.shear.targetAxialStrain, 0.02);
+}
+
+TEST(MainWindow, RunsToTheEndAndWritesScreenshots) {
+    Fixture f;
+    MainWindow& w = f.window;
+    click(w, w.startAction());
+    ASSERT_TRUE(waitFor([&] { return f.state() == RunState::Finished; }, 120000))
+        << w.controller().status().error;
+    w.refresh();
+    EXPECT_EQ(w.progressBar()->value(), 1000);
+    const int q = 0;
+    const auto points = w.chartsPanel()->curvePoints(q, f.shown()->series.back().test, "q_over_p");
+    EXPECT_GT(points.size(), 10);
+    EXPECT_NEAR(points.back().x(), 0.5, 0.05); // shear to 0.5 %, shown in percent
+
+    if (qEnvironmentVariable("GRAINLAB_WRITE_SCREENSHOTS") != QLatin1String("1")) {
+        GTEST_SKIP() << "set GRAINLAB_WRITE_SCREENSHOTS=1 to write docs/images/";
+    }
+    const QDir images(QStringLiteral(GRAINLAB_SOURCE_DIR "/docs/images"));
+    ASSERT_TRUE(QDir().mkpath(images.path()));
+    auto combos = w.findChildren<QComboBox*>();
+    combos.at(1)->setCurrentIndex(1); // strong force chains
+    combos.at(2)->setCurrentIndex(1); // void cells by valence
+    const Snapshot& s = *f.shown();
+    int chosen = 0;
+    for (std::size_t v = 0; v < s.voidCells.size(); ++v) {
+        if (s.voidCells[v].area > s.voidCells[chosen].area) {
+            chosen = static_cast<int>(v);
+        }
+    }
+    QTest::mouseClick(
+        w.sceneView(), Qt::LeftButton, Qt::NoModifier,
+        w.sceneView()->toWidget(s.voidCells[chosen].centroid1, s.voidCells[chosen].centroid2));
+    QTest::qWait(50);
+    EXPECT_TRUE(w.grab().save(images.filePath(QStringLiteral("main-window.png"))));
+    combos.at(0)->setCurrentIndex(3); // load-bearing vs rattlers
+    combos.at(1)->setCurrentIndex(2); // all forces
+    combos.at(2)->setCurrentIndex(0);
+    QTest::qWait(20);
+    EXPECT_TRUE(w.sceneView()->grab().save(images.filePath(QStringLiteral("scene-forces.png"))));
+    EXPECT_TRUE(w.chartsPanel()->grab().save(images.filePath(QStringLiteral("charts.png"))));
+    EXPECT_TRUE(w.chartsPanel()->exportChart(
+        0, images.filePath(QStringLiteral("chart-q-over-p.png")), QSize(900, 600)));
+}
+
+TEST(MainWindow, OpensARunFileAndScrubsItsCheckpoints) {
+    // A run file written headless by the engine, as `grainlab run` does.
+    const QString path = QDir::current().filePath(QStringLiteral("test-images/small-run.h5"));
+    QDir().mkpath(QStringLiteral("test-images"));
+    ExperimentConfig config = smallExperiment();
+    config.record.snapshotStepInterval = 10000;
+    config.record.snapshotStrainInterval = 0.001;
+    {
+        RunFile file(path.toStdString(), config.sourceText);
+        ExperimentRunner runner(config, &file);
+        while (runner.advance(5000)) {
+        }
+    }
+    Fixture f;
+    MainWindow& w = f.window;
+    QString error;
+    ASSERT_TRUE(w.openRunFile(path, &error)) << error.toStdString();
+    QSlider* slider = w.runFileSlider();
+    const auto checkpoints = listCheckpoints(path.toStdString());
+    ASSERT_GE(checkpoints.size(), 3u);
+    EXPECT_TRUE(slider->isVisible());
+    EXPECT_EQ(slider->maximum(), static_cast<int>(checkpoints.size()) - 1);
+    const std::int64_t last = f.shown()->step;
+    EXPECT_EQ(last, readState(path.toStdString(), checkpointGroup(checkpoints.back())).step);
+    slider->setValue(1);
+    const SnapshotPtr second = f.shown();
+    EXPECT_EQ(second->step, readState(path.toStdString(), checkpointGroup(checkpoints[1])).step);
+    EXPECT_LT(second->step, last);
+    // The timer does not replace the file's scene with the (idle) live run's.
+    QTest::qWait(50);
+    EXPECT_EQ(f.shown(), second);
+    // The file's shear series is in the charts under the file's name.
+    bool charted = false;
+    for (const SeriesTable& t : second->series) {
+        charted |= !w.chartsPanel()->curvePoints(0, t.test, "q_over_p").isEmpty();
+        EXPECT_EQ(t.test.rfind("small-run.h5: ", 0), 0u) << t.test;
+    }
+    EXPECT_TRUE(charted);
+
+    // Hovering a chart at eps1 = 0.2 % moves the scene to the shear checkpoint nearest to it.
+    slider->setValue(slider->maximum());
+    const std::string test = f.shown()->test;
+    ASSERT_FALSE(test.empty());
+    emit w.chartsPanel()->hoveredAxialStrain(0.002);
+    EXPECT_NEAR(f.shown()->axialStrain, 0.002, 0.0006);
+    EXPECT_EQ(f.shown()->test, test);
+    EXPECT_FALSE(w.openRunFile(QStringLiteral("/nonexistent.h5"), &error));
+    EXPECT_FALSE(error.isEmpty());
+}
+
+} // namespace
+} // namespace grainlab::ui

@@ -1,0 +1,230 @@
+// The scene renderer draws what the snapshot says: grain colour at every grain centre, the cell
+// fill wherever no grain (or image) can reach, background outside the cell; hit tests find the
+// grain and void cell under a pixel; overlays change the picture.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include <QDir>
+#include <QImage>
+#include <QPainter>
+
+#include <gtest/gtest.h>
+
+#include "grainlab/ui/scene_renderer.h"
+#include "test_scenes.h"
+
+namespace grainlab::ui {
+namespace {
+
+const SnapshotPtr& scene() {
+    static const SnapshotPtr s = testing::makeCompactedSnapshot();
+    return s;
+}
+
+bool sameColour(QRgb a, const QColor& b, int tolerance = 2) {
+    return std::abs(qRed(a) - b.red()) <= tolerance &&
+           std::abs(qGreen(a) - b.green()) <= tolerance &&
+           std::abs(qBlue(a) - b.blue()) <= tolerance;
+}
+
+QImage render(const SceneRenderer& r, QSize size) {
+    QImage image(size, QImage::Format_ARGB32);
+    QPainter painter(&image);
+    r.render(painter, size);
+    return image;
+}
+
+SceneRenderer plainRenderer(QSize size) {
+    SceneRenderer r;
+    r.setSnapshot(scene());
+    r.options().caption = false;
+    r.options().scaleBar = false;
+    r.fitToCell(size);
+    return r;
+}
+
+TEST(SceneRenderer, RendersEveryOverlayTogether) {
+    // Written into the build folder for a human look (test-images/scene_all_overlays.png).
+    const QSize size(800, 800);
+    SceneRenderer r;
+    r.setSnapshot(scene());
+    r.options().forceChains = ForceChains::All;
+    r.options().voidCells = VoidCellShading::Valence;
+    r.options().contactRose = true;
+    r.options().periodicImages = true;
+    r.options().selectedVoidCell = 3;
+    r.fitToCell(size);
+    const QImage image = render(r, size);
+    QDir().mkpath(QStringLiteral("test-images"));
+    EXPECT_TRUE(image.save(QStringLiteral("test-images/scene_all_overlays.png")));
+}
+
+TEST(SceneRenderer, FixtureHasContactsAndVoidCells) {
+    EXPECT_GT(scene()->network.contacts.size(), scene()->x1.size());
+    EXPECT_GT(scene()->voidCells.size(), 10u);
+}
+
+TEST(SceneRenderer, GrainColourAtEveryCentreAndCellFillFarFromGrains) {
+    const QSize size(700, 700);
+    for (GrainColouring mode : {GrainColouring::Size, GrainColouring::Rotation,
+                                GrainColouring::Coordination, GrainColouring::LoadBearing}) {
+        SceneRenderer r = plainRenderer(size);
+        r.options().colouring = mode;
+        const QImage image = render(r, size);
+        const Snapshot& s = *scene();
+        for (std::size_t g = 0; g < s.x1.size(); ++g) {
+            const QPoint p = r.view().toScreen(s.x1[g], s.x2[g]).toPoint();
+            ASSERT_TRUE(image.rect().contains(p));
+            const QColor expected = r.grainColour(static_cast<int>(g));
+            EXPECT_FALSE(sameColour(r.options().cellFill.rgb(), expected, 3)) << "grain " << g;
+            EXPECT_TRUE(sameColour(image.pixel(p), expected))
+                << "mode " << int(mode) << " grain " << g << " at " << p.x() << "," << p.y();
+        }
+    }
+
+    // Points of the cell farther than a bounding radius (plus two pixels) from every grain and
+    // every periodic image of a grain show the cell fill.
+    SceneRenderer r = plainRenderer(size);
+    const QImage image = render(r, size);
+    const Snapshot& s = *scene();
+    const CellMatrix& h = s.network.cell;
+    const double pixel = 1.0 / r.view().pixelsPerMetre();
+    int empty = 0;
+    for (int i = 1; i < 60; ++i) {
+        for (int j = 1; j < 60; ++j) {
+            const double f0 = i / 60.0, f1 = j / 60.0;
+            const double w1 = h[0] * f0 + h[2] * f1, w2 = h[1] * f0 + h[3] * f1;
+            bool free = true;
+            for (std::size_t g = 0; g < s.x1.size() && free; ++g) {
+                const double reach = s.shapes[s.shape[g]].halfWidth + 2.0 * pixel;
+                for (int a = -1; a <= 1 && free; ++a) {
+                    for (int b = -1; b <= 1 && free; ++b) {
+                        const double c1 = s.x1[g] + h[0] * a + h[2] * b;
+                        const double c2 = s.x2[g] + h[1] * a + h[3] * b;
+                        free = std::hypot(w1 - c1, w2 - c2) > reach;
+                    }
+                }
+            }
+            if (free) {
+                ++empty;
+                const QPoint p = r.view().toScreen(w1, w2).toPoint();
+                EXPECT_TRUE(sameColour(image.pixel(p), r.options().cellFill))
+                    << "empty point " << p.x() << "," << p.y();
+            }
+        }
+    }
+    EXPECT_GT(empty, 20);
+    // The corners of the image lie outside the cell's bounding box margin: background.
+    EXPECT_TRUE(sameColour(image.pixel(1, 1), r.options().background));
+    EXPECT_TRUE(
+        sameColour(image.pixel(size.width() - 2, size.height() - 2), r.options().background));
+}
+
+TEST(SceneRenderer, HitTestsFindGrainsAndVoidCells) {
+    const QSize size(700, 700);
+    SceneRenderer r = plainRenderer(size);
+    const Snapshot& s = *scene();
+    for (std::size_t g = 0; g < s.x1.size(); ++g) {
+        EXPECT_EQ(r.grainAt(r.view().toScreen(s.x1[g], s.x2[g])), static_cast<int>(g));
+    }
+    int found = 0;
+    for (std::size_t v = 0; v < s.voidCells.size(); ++v) {
+        const auto& c = s.voidCells[v];
+        found += r.voidCellAt(r.view().toScreen(c.centroid1, c.centroid2)) == static_cast<int>(v);
+    }
+    EXPECT_GE(found, static_cast<int>(0.9 * s.voidCells.size()));
+    // Far outside the cell there is nothing.
+    EXPECT_EQ(r.grainAt(QPointF(-500, -500)), -1);
+    EXPECT_EQ(r.voidCellAt(QPointF(-5000, -5000)), -1);
+}
+
+TEST(SceneRenderer, ScreenAndWorldRoundTripUnderZoomAndPan) {
+    SceneRenderer r = plainRenderer(QSize(400, 300));
+    const auto before = r.view().toWorld(QPointF(120, 80));
+    r.view().zoomAt(QPointF(120, 80), 3.0);
+    const auto after = r.view().toWorld(QPointF(120, 80));
+    EXPECT_NEAR(before[0], after[0], 1e-12);
+    EXPECT_NEAR(before[1], after[1], 1e-12);
+    r.view().panBy(QPointF(10, -20));
+    const QPointF p = r.view().toScreen(after[0], after[1]);
+    EXPECT_NEAR(p.x(), 130.0, 1e-9);
+    EXPECT_NEAR(p.y(), 60.0, 1e-9);
+    // x1 is up on screen.
+    EXPECT_LT(r.view().toScreen(1e-3, 0).y(), r.view().toScreen(0, 0).y());
+}
+
+TEST(SceneRenderer, OverlaysAndImagesChangeThePicture) {
+    const QSize size(600, 600);
+    SceneRenderer r = plainRenderer(size);
+    const QImage plain = render(r, size);
+    auto differingPixels = [&](const QImage& other) {
+        int n = 0;
+        for (int y = 0; y < size.height(); y += 2) {
+            for (int x = 0; x < size.width(); x += 2) {
+                n += plain.pixel(x, y) != other.pixel(x, y);
+            }
+        }
+        return n;
+    };
+    r.options().forceChains = ForceChains::All;
+    const int all = differingPixels(render(r, size));
+    r.options().forceChains = ForceChains::Strong;
+    const int strong = differingPixels(render(r, size));
+    EXPECT_GT(all, 500);
+    EXPECT_GT(strong, 100);
+    EXPECT_LT(strong, all);
+    r.options().forceChains = ForceChains::Off;
+    r.options().voidCells = VoidCellShading::Valence;
+    EXPECT_GT(differingPixels(render(r, size)), 2000);
+    r.options().voidCells = VoidCellShading::Off;
+    r.options().periodicImages = true;
+    r.fitToCell(size);
+    EXPECT_GT(differingPixels(render(r, size)), 500);
+    r.options().periodicImages = false;
+    r.options().contactRose = true;
+    r.options().scaleBar = true;
+    EXPECT_GT(differingPixels(render(r, size)), 300);
+}
+
+TEST(SceneRenderer, FrameTimeOfTheReferenceAssembly) {
+    // 8450 ovals of the reference study on their loose grid (no contacts): the QPainter frame
+    // time of the whole cell at 1000 x 1000 pixels, and zoomed in (only visible grains drawn).
+    AssemblySpec spec;
+    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 11);
+    const SimulationState state = generateGridAssembly(spec, SimulationParameters{});
+    auto s = std::make_shared<Snapshot>();
+    s->shapes = state.shapes;
+    s->shape = state.grains.shape;
+    s->x1 = state.grains.x1;
+    s->x2 = state.grains.x2;
+    s->theta = state.grains.theta;
+    s->network.cell = state.cell;
+    s->network.grainCount = static_cast<std::int32_t>(s->x1.size());
+    SceneRenderer r;
+    r.setSnapshot(s);
+    const QSize size(1000, 1000);
+    r.fitToCell(size);
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    auto frameMs = [&] {
+        QPainter painter(&image);
+        const auto t0 = std::chrono::steady_clock::now();
+        const int frames = 5;
+        for (int k = 0; k < frames; ++k) {
+            r.render(painter, size);
+        }
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                   .count() /
+               frames;
+    };
+    const double whole = frameMs();
+    r.view().zoomAt(QPointF(500, 500), 8.0);
+    const double zoomed = frameMs();
+    std::printf("[ frame time ] 8450 ovals: whole cell %.1f ms, zoomed x8 %.1f ms\n", whole,
+                zoomed);
+    EXPECT_LT(zoomed, whole);
+    EXPECT_LT(whole, 500.0);
+}
+
+} // namespace
+} // namespace grainlab::ui

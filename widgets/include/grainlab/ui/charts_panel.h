@@ -1,0 +1,114 @@
+#pragma once
+// Live charts of the recorded series (Qt Charts): q/p and volumetric strain against axial
+// strain, fabric anisotropy H11 - H22 of all / strong / weak contacts, coordination Z, Z_eff and
+// sliding index S, void-cell count N_v/N_vi, and Z_eff against N_v/N_vi. Several tests overlay
+// in one chart, one colour per test, one line style per quantity. Column names are the CSV
+// contract of SPEC §4. Hovering a chart marks the point under the cursor and reports its eps1.
+// GUI thread only; series are replaced wholesale (QXYSeries::replace), never appended point by
+// point.
+
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <QChartView>
+#include <QLineSeries>
+#include <QString>
+#include <QWidget>
+
+#include "grainlab/series.h"
+
+namespace grainlab::ui {
+
+/// One line of a chart: a column plotted against the chart's x column.
+struct ChartCurve {
+    std::string column; ///< y column, e.g. "Hsdev"
+    QString label;      ///< legend text, e.g. "strong"
+    double scale = 1.0; ///< display factor (100 for percent)
+    Qt::PenStyle style = Qt::SolidLine;
+};
+
+struct ChartDefinition {
+    QString name;        ///< file-safe name, e.g. "q_over_p"
+    QString title;       ///< chart title
+    std::string xColumn; ///< e.g. "eps1"
+    QString xLabel;      ///< with unit, e.g. "ε1 [%]"
+    double xScale = 1.0; ///< display factor of x
+    QString yLabel;      ///< with unit
+    std::vector<ChartCurve> curves;
+};
+
+/// The six charts of the issue, in display order.
+std::vector<ChartDefinition> defaultChartDefinitions();
+
+/// A chart view that shows a vertical marker and the values under the cursor.
+class HoverChartView : public QChartView {
+    Q_OBJECT
+public:
+    explicit HoverChartView(QChart* chart, QWidget* parent = nullptr);
+    /// Marks data x (display units) or clears the mark (NaN).
+    void setMarker(double x);
+    double marker() const { return marker_; }
+
+signals:
+    /// The data x under the cursor (display units).
+    void hovered(double x);
+
+protected:
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+    void drawForeground(QPainter* painter, const QRectF& rect) override;
+
+private:
+    double marker_;
+};
+
+class ChartsPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit ChartsPanel(QWidget* parent = nullptr,
+                         std::vector<ChartDefinition> charts = defaultChartDefinitions());
+
+    /// Shows these tables (every test: live and loaded). A table's curves are updated only when
+    /// its row count changed. Tests no longer present are removed.
+    void setSeries(const std::vector<SeriesTable>& tables);
+    /// Plot only the rows recorded during shear (stage starting with "shear"); default true.
+    void setShearOnly(bool shearOnly);
+
+    int chartCount() const { return static_cast<int>(views_.size()); }
+    const ChartDefinition& definition(int chart) const { return definitions_[chart]; }
+    HoverChartView* chartView(int chart) const { return views_[chart]; }
+    /// Points of the curve of `column` of test `test` in chart `chart` (display units).
+    QList<QPointF> curvePoints(int chart, const std::string& test, const std::string& column) const;
+    /// The colour given to a test (stable while the test is shown).
+    QColor testColour(const std::string& test) const;
+
+    /// Writes chart `chart` to `path` (.png, .svg or .pdf) at `size` pixels. Returns false and
+    /// sets `error` on failure.
+    bool exportChart(int chart, const QString& path, QSize size, QString* error = nullptr) const;
+
+signals:
+    /// Axial strain eps1 [-] under the cursor in a chart drawn against eps1.
+    void hoveredAxialStrain(double eps1);
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
+private:
+    struct Curve {
+        QLineSeries* series = nullptr;
+        std::size_t rows = 0;
+        bool seen = false;
+    };
+    void rescale(int chart);
+
+    std::vector<ChartDefinition> definitions_;
+    std::vector<HoverChartView*> views_;
+    std::map<std::string, int> testColours_;
+    /// (chart, test, column) -> curve.
+    std::map<std::tuple<int, std::string, std::string>, Curve> curves_;
+    bool shearOnly_ = true;
+};
+
+} // namespace grainlab::ui
