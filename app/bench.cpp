@@ -1,14 +1,25 @@
 #include "bench.h"
 
+#include <malloc.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <numbers>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "grainlab/assembly.h"
+#include "grainlab/measures.h"
 #include "grainlab/simulation.h"
 #include "progress_bar.h"
 
@@ -16,14 +27,18 @@ namespace grainlab {
 namespace {
 
 constexpr double kConfiningStress = 1e5; // [Pa]
+constexpr double kAxialStrainRate = 0.2; // engineering, as LAMMPS's fix deform erate [1/s]
+
+// ---------------------------------------------------------------------------------------------
+// Assemblies
 
 /// Loose grid -> frictionless isotropic compaction to 100 kPa, then velocities cleared.
-SimulationState prepareDenseAssembly(const BenchOptions& o, double aspectRatio) {
+SimulationState compactedAssembly(int grains, double aspectRatio, std::uint64_t seed) {
     AssemblySpec spec;
-    spec.grainCount = o.grains;
+    spec.grainCount = grains;
     spec.widths = evenlySpacedWidths(1e-3, 2e-3, 11);
     spec.aspectRatio = aspectRatio;
-    spec.seed = o.seed;
+    spec.seed = seed;
     SimulationParameters p;
     p.friction = 0.0;
     p.servo.maxStrainRate = 20.0;
@@ -32,22 +47,173 @@ SimulationState prepareDenseAssembly(const BenchOptions& o, double aspectRatio) 
     const AxisControl servo{AxisMode::Stress, 0.0, kConfiningStress};
     sim.setAxisControl(0, servo);
     sim.setAxisControl(1, servo);
-    ProgressBar bar(fmt::format("preparing {} {}s at 100 kPa", o.grains,
-                                aspectRatio < 1 ? "oval" : "disk"));
+    ProgressBar bar(
+        fmt::format("preparing {} {}s at 100 kPa", grains, aspectRatio < 1 ? "oval" : "disk"));
+    // The experiment runner's equilibrium rule: stress within 1 % and unbalanced-force index
+    // below 1 % at 20 consecutive checks 100 steps apart.
     const std::int64_t maxSteps = 400000;
     int calm = 0;
-    for (std::int64_t k = 0; k < maxSteps && calm < 20; k += 500) {
-        sim.advance(500);
+    for (std::int64_t k = 0; k < maxSteps && calm < 20; k += 100) {
+        sim.advance(100);
         const Stress s = sim.stress();
-        const double error = std::max(std::fabs(s.s11 - kConfiningStress),
-                                      std::fabs(s.s22 - kConfiningStress)) / kConfiningStress;
-        const Energies e = sim.energies();
-        calm = (error < 0.01 && e.kinetic < 1e-4 * e.elastic) ? calm + 1 : 0;
-        bar.update(double(k) / maxSteps, fmt::format("p error {:.1f} %", 100 * error));
+        const double error =
+            std::max(std::fabs(s.s11 - kConfiningStress), std::fabs(s.s22 - kConfiningStress)) /
+            kConfiningStress;
+        const double unbalanced = unbalancedForceIndex(sim.contactNetwork());
+        calm = (error < 0.01 && unbalanced < 1.0) ? calm + 1 : 0;
+        bar.update(double(k) / maxSteps,
+                   fmt::format("p error {:.1f} % I_uf {:.2f} %", 100 * error, unbalanced));
     }
     bar.finish();
     sim.clearVelocities();
-    return sim.state();
+    SimulationState out = sim.state();
+    out.parameters = SimulationParameters{}; // the reference parameters for the timed runs
+    return out;
+}
+
+/// `tiles1` x `tiles2` copies of a periodic state side by side: again a periodic state, with
+/// the same contacts per grain (for the scaling table). The neighbour list is rebuilt.
+SimulationState tiled(const SimulationState& base, int tiles1, int tiles2) {
+    SimulationState s;
+    s.shapes = base.shapes;
+    s.parameters = base.parameters;
+    s.axes = base.axes;
+    const auto& h = base.cell;
+    const std::size_t n = base.grains.size();
+    s.grains.resize(n * tiles1 * tiles2);
+    std::size_t k = 0;
+    for (int a = 0; a < tiles1; ++a) {
+        for (int b = 0; b < tiles2; ++b) {
+            for (std::size_t i = 0; i < n; ++i, ++k) {
+                s.grains.x1[k] = base.grains.x1[i] + h[0] * a + h[2] * b;
+                s.grains.x2[k] = base.grains.x2[i] + h[1] * a + h[3] * b;
+                s.grains.theta[k] = base.grains.theta[i];
+                s.grains.shape[k] = base.grains.shape[i];
+            }
+        }
+    }
+    s.cell = {h[0] * tiles1, h[1] * tiles1, h[2] * tiles2, h[3] * tiles2};
+    return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Timed runs
+
+/// Heap bytes in use (glibc: arena plus mmapped blocks).
+std::size_t heapInUse() {
+    const struct mallinfo2 m = mallinfo2();
+    return m.uordblks + m.hblkhd;
+}
+
+struct RunResult {
+    double grainStepsPerSecond = 0;
+    double contactsPerGrain = 0; ///< 2 * contacts / grains (LAMMPS's Z)
+    std::int64_t rebuilds = 0;
+    double bytesPerGrain = 0; ///< engine state, heap bytes per grain
+    SimulationState final;    ///< for the 1-thread vs 2-thread comparison
+};
+
+/// Biaxial compression from `dense`: axis 1 shortened at the engineering rate 0.2 /s, axis 2
+/// held at 100 kPa, mu = 0.5. Times `steps` steps (the neighbour list is built before).
+RunResult timeEngine(const SimulationState& dense, int threads, std::int64_t steps,
+                     bool keepState) {
+    const std::size_t heapBefore = heapInUse();
+    SimulationState state = dense;
+    state.parameters.friction = 0.5;
+    state.parameters.threads = threads;
+    Simulation sim(std::move(state));
+    sim.setAxisControl(0, AxisControl{AxisMode::Strain, kAxialStrainRate, dense.cell[0]});
+    sim.setAxisControl(1, AxisControl{AxisMode::Stress, 0.0, kConfiningStress});
+    const auto start = std::chrono::steady_clock::now();
+    sim.advance(steps);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    RunResult r;
+    const double n = double(sim.grainCount());
+    r.bytesPerGrain = double(heapInUse() - heapBefore) / n;
+    r.grainStepsPerSecond = n * double(steps) / seconds;
+    r.contactsPerGrain = 2.0 * double(sim.contactCount()) / n;
+    r.rebuilds = sim.neighbourRebuilds();
+    if (keepState) {
+        r.final = sim.state();
+    }
+    return r;
+}
+
+template <typename T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+bool sameState(const SimulationState& a, const SimulationState& b) {
+    return sameBits(a.grains.x1, b.grains.x1) && sameBits(a.grains.x2, b.grains.x2) &&
+           sameBits(a.grains.theta, b.grains.theta) && sameBits(a.grains.v1, b.grains.v1) &&
+           sameBits(a.grains.v2, b.grains.v2) && sameBits(a.grains.omega, b.grains.omega) &&
+           sameBits(a.pairs.tangentialForce, b.pairs.tangentialForce) &&
+           std::memcmp(a.cell.data(), b.cell.data(), sizeof(a.cell)) == 0;
+}
+
+struct LammpsResult {
+    double grainStepsPerSecond = 0;
+    double contactsPerGrain = 0;
+};
+
+std::string shellQuote(const std::string& text) {
+    std::string out = "'";
+    for (char c : text) {
+        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    return out + "'";
+}
+
+bool haveExecutable(const std::string& name) {
+    return std::system(fmt::format("command -v {} >/dev/null 2>&1", shellQuote(name)).c_str()) == 0;
+}
+
+/// Runs stock LAMMPS on in.bench (biaxial mode, 1 process, 1 thread) and reads its loop time.
+LammpsResult runLammps(const BenchOptions& o, std::int64_t steps) {
+    const std::string command =
+        fmt::format("cd {} && OMP_NUM_THREADS=1 {} -in in.bench -var mode biax -var nsteps {} "
+                    "-log none -echo none 2>&1",
+                    shellQuote(o.lammpsDirectory), shellQuote(o.lammpsExecutable), steps);
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+    if (!pipe) {
+        throw std::runtime_error("bench: could not start LAMMPS: " + command);
+    }
+    std::string output;
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe.get()) != nullptr) {
+        output += buffer;
+    }
+    LammpsResult r;
+    double loop = 0;
+    long long atoms = 0, ranSteps = 0;
+    int procs = 0;
+    // The last loop time is the timed run's (in.bench first does a `run 0`).
+    const auto at = output.rfind("Loop time of ");
+    if (at == std::string::npos ||
+        std::sscanf(output.c_str() + at, "Loop time of %lf on %d procs for %lld steps with %lld",
+                    &loop, &procs, &ranSteps, &atoms) != 4 ||
+        !(loop > 0)) {
+        throw std::runtime_error("bench: LAMMPS printed no loop time; its output ends with:\n" +
+                                 output.substr(output.size() > 2000 ? output.size() - 2000 : 0));
+    }
+    r.grainStepsPerSecond = double(atoms) * double(ranSteps) / loop;
+    const auto end = output.find("END: ");
+    const auto z = end == std::string::npos ? end : output.find(" Z=", end);
+    if (z != std::string::npos) {
+        r.contactsPerGrain = std::atof(output.c_str() + z + 3);
+    }
+    return r;
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) {
+        return std::nan("");
+    }
+    std::sort(values.begin(), values.end());
+    const std::size_t m = values.size() / 2;
+    return values.size() % 2 ? values[m] : 0.5 * (values[m - 1] + values[m]);
 }
 
 std::vector<int> parseThreads(const std::string& text) {
@@ -60,7 +226,214 @@ std::vector<int> parseThreads(const std::string& text) {
     return out;
 }
 
+/// One row of the table: an engine configuration or LAMMPS, with its result in every round.
+struct Series {
+    std::string name, shape;
+    int threads = 1;
+    std::size_t grains = 0;
+    std::vector<double> rate, contacts;
+    std::int64_t rebuilds = 0;
+    double bytesPerGrain = 0;
+};
+
+double medianRatio(const Series& a, const Series& b) {
+    std::vector<double> r;
+    for (std::size_t k = 0; k < std::min(a.rate.size(), b.rate.size()); ++k) {
+        r.push_back(a.rate[k] / b.rate[k]);
+    }
+    return median(r);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+int runScaling(const BenchOptions& o, const std::vector<std::pair<std::string, double>>& shapes,
+               const std::vector<int>& threadCounts) {
+    // One compacted base of 1000 grains per shape, tiled 1x1, 4x2, 8x4 and 16x8: the same dense
+    // structure and contacts per grain at every size, without compacting 128k grains.
+    const std::vector<std::pair<int, int>> tilings = {{1, 1}, {4, 2}, {8, 4}, {16, 8}};
+    fmt::print("{:<6} {:>7} {:>8} {:>8} {:>16} {:>16} {:>14} {:>14}\n", "shape", "grains",
+               "threads", "steps", "grain-steps/s", "ns/grain-step", "contacts/grain",
+               "bytes/grain");
+    for (const auto& [name, aspect] : shapes) {
+        const SimulationState base = compactedAssembly(1000, aspect, o.seed);
+        for (const auto& [t1, t2] : tilings) {
+            const SimulationState dense = tiled(base, t1, t2);
+            const std::size_t n = dense.grains.size();
+            // About the same total work per size (at least 200 steps).
+            const std::int64_t steps =
+                std::max<std::int64_t>(200, std::int64_t(double(o.steps) * 8450.0 / double(n)));
+            for (int threads : threadCounts) {
+                std::vector<double> rates;
+                RunResult last;
+                for (int round = 0; round < o.rounds; ++round) {
+                    fmt::print(stderr, "scaling: {} {} grains, {} thread(s), round {}/{}\n", name,
+                               n, threads, round + 1, o.rounds);
+                    last = timeEngine(dense, threads, steps, false);
+                    rates.push_back(last.grainStepsPerSecond);
+                }
+                const double rate = median(rates);
+                fmt::print("{:<6} {:>7} {:>8} {:>8} {:>16.4g} {:>16.2f} {:>14.3f} {:>14.0f}\n",
+                           name, n, threads, steps, rate, 1e9 / rate, last.contactsPerGrain,
+                           last.bytesPerGrain);
+                std::fflush(stdout);
+            }
+        }
+    }
+    return 0;
+}
+
 } // namespace
+
+SimulationState readLammpsDisks(const std::string& path, const SimulationParameters& parameters) {
+    std::ifstream in(path);
+    if (!in) {
+        throw std::runtime_error(fmt::format("{}: cannot open the LAMMPS data file", path));
+    }
+    const auto fail = [&](int line, const std::string& what) {
+        return std::runtime_error(fmt::format("{}:{}: {}", path, line, what));
+    };
+    long long atoms = -1;
+    double xlo = 0, xhi = 0, ylo = 0, yhi = 0;
+    bool haveX = false, haveY = false;
+    struct Atom {
+        long long id;
+        double diameter, density, x, y;
+    };
+    std::vector<Atom> list;
+    std::map<long long, std::size_t> byId;
+    std::map<long long, std::array<double, 3>> velocities; // vx, vy, wz
+    std::string line, section;
+    int number = 0;
+    std::getline(in, line); // the first line is a title
+    ++number;
+    while (std::getline(in, line)) {
+        ++number;
+        const auto hash = line.find('#');
+        const std::string body = line.substr(0, hash);
+        std::istringstream words(body);
+        std::string first;
+        if (!(words >> first)) {
+            continue;
+        }
+        if (std::isalpha(static_cast<unsigned char>(first[0]))) {
+            section = first; // "Atoms", "Velocities", ...
+            if (section == "Atoms" && line.find("sphere") == std::string::npos) {
+                throw fail(number, "the Atoms section must be atom_style sphere");
+            }
+            continue;
+        }
+        if (section.empty()) {
+            std::istringstream header(body);
+            double a = 0, b = 0;
+            std::string k1, k2;
+            header >> a;
+            if (body.find("atoms") != std::string::npos) {
+                atoms = static_cast<long long>(a);
+            } else if (header >> b >> k1 >> k2; k1 == "xlo") {
+                xlo = a, xhi = b, haveX = true;
+            } else if (k1 == "ylo") {
+                ylo = a, yhi = b, haveY = true;
+            } else if (body.find("xy") != std::string::npos) {
+                throw fail(number, "a triclinic box is not supported");
+            }
+            continue;
+        }
+        std::istringstream row(body);
+        if (section == "Atoms") {
+            Atom a{};
+            int type = 0;
+            if (!(row >> a.id >> type >> a.diameter >> a.density >> a.x >> a.y)) {
+                throw fail(number, "expected: id type diameter density x y z ix iy iz");
+            }
+            if (!(a.diameter > 0.0)) {
+                throw fail(number, fmt::format("diameter {} m: must be > 0", a.diameter));
+            }
+            byId[a.id] = list.size();
+            list.push_back(a);
+        } else if (section == "Velocities") {
+            long long id = 0;
+            double vx = 0, vy = 0, vz = 0, wx = 0, wy = 0, wz = 0;
+            if (!(row >> id >> vx >> vy >> vz >> wx >> wy >> wz)) {
+                throw fail(number, "expected: id vx vy vz wx wy wz");
+            }
+            velocities[id] = {vx, vy, wz};
+        }
+    }
+    if (atoms < 1 || !haveX || !haveY) {
+        throw std::runtime_error(
+            fmt::format("{}: the header must give the atom count, xlo xhi and ylo yhi", path));
+    }
+    if (static_cast<long long>(list.size()) != atoms) {
+        throw std::runtime_error(fmt::format("{}: the header announces {} atoms, the Atoms "
+                                             "section holds {}",
+                                             path, atoms, list.size()));
+    }
+    SimulationState s;
+    s.parameters = parameters;
+    // Size classes: one shape per distinct diameter (equal to round-off).
+    std::vector<double> diameters;
+    for (const Atom& a : list) {
+        diameters.push_back(a.diameter);
+    }
+    std::sort(diameters.begin(), diameters.end());
+    std::vector<double> classes;
+    for (double d : diameters) {
+        if (classes.empty() || d > classes.back() * (1 + 1e-9)) {
+            classes.push_back(d);
+            s.shapes.push_back(makeOval(d, 1.0));
+        }
+    }
+    const double ly = yhi - ylo, lx = xhi - xlo;
+    s.cell = {ly, 0.0, 0.0, lx};
+    s.grains.resize(list.size());
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const Atom& a = list[i];
+        const auto c = std::lower_bound(classes.begin(), classes.end(), a.diameter * (1 - 1e-9));
+        s.grains.shape[i] = static_cast<std::int32_t>(c - classes.begin());
+        // LAMMPS stores the mass as density * 4/3 pi r^3; in.prep set it to 2650 pi r^2.
+        const double r = 0.5 * a.diameter;
+        const double mass = a.density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+        const double ours = parameters.density * std::numbers::pi * r * r;
+        if (std::fabs(mass - ours) > 1e-9 * ours) {
+            throw std::runtime_error(fmt::format(
+                "{}: atom {}: mass {:.9g} kg differs from density * pi r^2 = {:.9g} kg (a 2D "
+                "mass per metre of thickness, `set density/disc` in LAMMPS, is expected)",
+                path, a.id, mass, ours));
+        }
+        s.grains.x1[i] = a.y - ylo;
+        s.grains.x2[i] = a.x - xlo;
+        if (const auto v = velocities.find(a.id); v != velocities.end()) {
+            s.grains.v1[i] = v->second[1];
+            s.grains.v2[i] = v->second[0];
+            s.grains.omega[i] = -v->second[2]; // swapping the axes mirrors the sense of rotation
+        }
+    }
+    return s;
+}
+
+void addBenchOptions(CLI::App& command, BenchOptions& o) {
+    command.add_option("--shape", o.shape, "oval, disk or both")->capture_default_str();
+    command.add_option("--grains", o.grains, "grains of a generated assembly")
+        ->capture_default_str();
+    command.add_option("--steps", o.steps, "timed steps per run")->capture_default_str();
+    command.add_option("--threads", o.threads, "thread counts, comma separated")
+        ->capture_default_str();
+    command.add_option("--seed", o.seed, "random seed of generated assemblies")
+        ->capture_default_str();
+    command.add_option("--rounds", o.rounds, "interleaved rounds (the table shows medians)")
+        ->capture_default_str();
+    command
+        .add_option("--assembly", o.assembly,
+                    "disks: lammps (dense.data, as LAMMPS runs it) or generated (compacted here)")
+        ->capture_default_str();
+    command.add_flag("--vs-lammps", o.versusLammps,
+                     "run stock LAMMPS (lmp, in.bench) in every round and print the ratios");
+    command.add_option("--lammps-dir", o.lammpsDirectory, "folder with in.bench and dense.data")
+        ->capture_default_str();
+    command.add_option("--lammps", o.lammpsExecutable, "LAMMPS executable")->capture_default_str();
+    command.add_flag("--scaling", o.scaling,
+                     "cost per grain-step at 1k, 8k, 32k and 128k grains (tiled assemblies)");
+}
 
 int runBench(const BenchOptions& o) {
     std::vector<std::pair<std::string, double>> shapes;
@@ -74,29 +447,146 @@ int runBench(const BenchOptions& o) {
         fmt::print(stderr, "bench: --shape {}: allowed values are oval, disk, both\n", o.shape);
         return 2;
     }
-    fmt::print("{:<6} {:>7} {:>8} {:>8} {:>16} {:>14} {:>9}\n", "shape", "grains", "threads",
-               "steps", "grain-steps/s", "contacts/grain", "rebuilds");
+    if (o.assembly != "lammps" && o.assembly != "generated") {
+        fmt::print(stderr, "bench: --assembly {}: allowed values are lammps, generated\n",
+                   o.assembly);
+        return 2;
+    }
+    if (o.rounds < 1 || o.steps < 1) {
+        fmt::print(stderr, "bench: --rounds and --steps must be >= 1\n");
+        return 2;
+    }
+    const std::vector<int> threadCounts = parseThreads(o.threads);
+    if (o.scaling) {
+        return runScaling(o, shapes, threadCounts);
+    }
+    if (o.versusLammps && !haveExecutable(o.lammpsExecutable)) {
+        fmt::print(stderr,
+                   "bench: --vs-lammps: the LAMMPS executable `{}` was not found. On Debian 12: "
+                   "apt-get update && apt-get install -y lammps   (provides `lmp`)\n",
+                   o.lammpsExecutable);
+        return 2;
+    }
+
+    // The dense assemblies, prepared once.
+    std::vector<std::pair<std::string, SimulationState>> assemblies;
     for (const auto& [name, aspect] : shapes) {
-        const SimulationState dense = prepareDenseAssembly(o, aspect);
-        for (int threads : parseThreads(o.threads)) {
-            SimulationState state = dense;
-            state.parameters.friction = 0.5;
-            state.parameters.threads = threads;
-            Simulation sim(std::move(state));
-            sim.setAxisControl(0, AxisControl{AxisMode::Strain, 0.2, 0.0});
-            sim.setAxisControl(1, AxisControl{AxisMode::Stress, 0.0, kConfiningStress});
-            const auto start = std::chrono::steady_clock::now();
-            sim.advance(o.steps);
-            const double seconds =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            fmt::print("{:<6} {:>7} {:>8} {:>8} {:>16.4g} {:>14.3f} {:>9}\n", name,
-                       sim.grainCount(), threads, o.steps,
-                       double(sim.grainCount()) * double(o.steps) / seconds,
-                       2.0 * double(sim.contactCount()) / double(sim.grainCount()),
-                       sim.neighbourRebuilds());
-            std::fflush(stdout);
+        if (name == "disk" && o.assembly == "lammps") {
+            const std::string path = o.lammpsDirectory + "/dense.data";
+            fmt::print(stderr, "reading {}\n", path);
+            assemblies.emplace_back(name, readLammpsDisks(path, SimulationParameters{}));
+        } else {
+            // Ovals: the LAMMPS assembly's grain count and size classes (widths 1-2 mm in 11
+            // classes), compacted by the engine (frictionless, 100 kPa).
+            const int grains = o.assembly == "lammps" ? 8450 : o.grains;
+            assemblies.emplace_back(name, compactedAssembly(grains, aspect, o.seed));
         }
     }
+
+    // Rows in the order they run within a round: ours 1 thread, LAMMPS, ours 2 threads, ...
+    std::vector<Series> series;
+    std::vector<std::pair<std::size_t, int>> plan; // (assembly, threads); threads 0 = LAMMPS
+    for (std::size_t a = 0; a < assemblies.size(); ++a) {
+        for (std::size_t t = 0; t < threadCounts.size(); ++t) {
+            plan.emplace_back(a, threadCounts[t]);
+            if (a == 0 && t == 0 && o.versusLammps) {
+                plan.emplace_back(a, 0);
+            }
+        }
+    }
+    for (const auto& [a, threads] : plan) {
+        Series s;
+        s.shape = assemblies[a].first;
+        s.threads = threads;
+        s.grains = assemblies[a].second.grains.size();
+        s.name = threads == 0 ? "LAMMPS" : "GrainLab";
+        if (threads == 0) {
+            s.shape = "disk";
+            s.threads = 1;
+        }
+        series.push_back(s);
+    }
+    std::vector<int> identical(assemblies.size(), 1);
+    for (int round = 0; round < o.rounds; ++round) {
+        std::vector<SimulationState> firstFinal(assemblies.size());
+        for (std::size_t k = 0; k < plan.size(); ++k) {
+            const auto& [a, threads] = plan[k];
+            Series& s = series[k];
+            fmt::print(stderr, "round {}/{}: {} {} {} thread(s), {} steps\n", round + 1, o.rounds,
+                       s.name, s.shape, s.threads, o.steps);
+            if (threads == 0) {
+                const LammpsResult r = runLammps(o, o.steps);
+                s.rate.push_back(r.grainStepsPerSecond);
+                s.contacts.push_back(r.contactsPerGrain);
+                continue;
+            }
+            RunResult r = timeEngine(assemblies[a].second, threads, o.steps, true);
+            s.rate.push_back(r.grainStepsPerSecond);
+            s.contacts.push_back(r.contactsPerGrain);
+            s.rebuilds = r.rebuilds;
+            s.bytesPerGrain = r.bytesPerGrain;
+            if (firstFinal[a].grains.size() == 0) {
+                firstFinal[a] = std::move(r.final);
+            } else if (!sameState(firstFinal[a], r.final)) {
+                identical[a] = 0;
+            }
+        }
+    }
+
+    fmt::print("{:<9} {:<5} {:>6} {:>7} {:>7} {:>14} {:>11} {:>11} {:>9} {:>8} {:>8}\n", "engine",
+               "shape", "grains", "threads", "steps", "grain-steps/s", "min", "max", "contacts/g",
+               "rebuilds", "B/grain");
+    for (const Series& s : series) {
+        const auto [lo, hi] = std::minmax_element(s.rate.begin(), s.rate.end());
+        fmt::print("{:<9} {:<5} {:>6} {:>7} {:>7} {:>14.4g} {:>11.4g} {:>11.4g} {:>9.3f} {:>8} "
+                   "{:>8.0f}\n",
+                   s.name, s.shape, s.grains, s.threads, o.steps, median(s.rate), *lo, *hi,
+                   median(s.contacts),
+                   s.name == "LAMMPS" ? std::string("-") : std::to_string(s.rebuilds),
+                   s.bytesPerGrain);
+    }
+    fmt::print("\nratios (median over rounds of the per-round ratio; {} round(s), {} steps):\n",
+               o.rounds, o.steps);
+    const auto find = [&](const std::string& name, const std::string& shape,
+                          int threads) -> const Series* {
+        for (const Series& s : series) {
+            if (s.name == name && s.shape == shape && s.threads == threads) {
+                return &s;
+            }
+        }
+        return nullptr;
+    };
+    const Series* lammps = find("LAMMPS", "disk", 1);
+    for (const Series& s : series) {
+        if (s.name != "GrainLab") {
+            continue;
+        }
+        if (lammps != nullptr) {
+            fmt::print("  {} {} thread(s) / LAMMPS 1 core: {:.2f}x\n", s.shape, s.threads,
+                       medianRatio(s, *lammps));
+        }
+        if (s.threads != threadCounts.front()) {
+            if (const Series* one = find("GrainLab", s.shape, threadCounts.front())) {
+                fmt::print("  {} {} threads / {} thread(s): {:.2f}x\n", s.shape, s.threads,
+                           threadCounts.front(), medianRatio(s, *one));
+            }
+        }
+    }
+    for (int threads : threadCounts) {
+        const Series* disk = find("GrainLab", "disk", threads);
+        const Series* oval = find("GrainLab", "oval", threads);
+        if (disk != nullptr && oval != nullptr) {
+            fmt::print("  oval cost / disk cost per grain-step, {} thread(s): {:.2f}\n", threads,
+                       medianRatio(*disk, *oval));
+        }
+    }
+    if (threadCounts.size() > 1) {
+        for (std::size_t a = 0; a < assemblies.size(); ++a) {
+            fmt::print("  {}: final states for threads {} bit-identical: {}\n", assemblies[a].first,
+                       o.threads, identical[a] ? "yes" : "NO");
+        }
+    }
+    std::fflush(stdout);
     return 0;
 }
 

@@ -1,20 +1,49 @@
 #pragma once
 // `grainlab bench`: times the engine on a dense periodic assembly under biaxial compression
-// and prints grain-steps per second. Runs on the main thread.
+// (axis 1 strain-controlled at an engineering rate of 0.2 /s, axis 2 held at 100 kPa, mu = 0.5)
+// and prints grain-steps per second; optionally runs stock LAMMPS on the same disk assembly in
+// the same invocation (interleaved rounds), and the cost per grain-step from 1k to 128k grains.
+// Progress goes to stderr, the tables to stdout. Runs on the main thread.
 
 #include <cstdint>
 #include <string>
 
+#include "grainlab/simulation_state.h"
+
+namespace CLI {
+class App;
+}
+
 namespace grainlab {
 
 struct BenchOptions {
-    std::string shape = "oval";   ///< "oval", "disk" or "both"
-    int grains = 8450;
-    std::int64_t steps = 20000;   ///< timed steps
-    std::string threads = "1,2";  ///< thread counts to time, comma separated
+    std::string shape = "both";  ///< "oval", "disk" or "both"
+    int grains = 8450;           ///< grains of a generated assembly
+    std::int64_t steps = 20000;  ///< timed steps per run
+    std::string threads = "1,2"; ///< thread counts to time, comma separated
     std::uint64_t seed = 42;
+    int rounds = 3; ///< interleaved rounds; the table shows medians
+    /// Disk assembly: "lammps" reads lammpsDirectory/dense.data (the assembly LAMMPS runs);
+    /// "generated" compacts a grid assembly with the engine (as for ovals).
+    std::string assembly = "lammps";
+    bool versusLammps = false; ///< also run stock LAMMPS (in.bench) in every round
+    std::string lammpsDirectory = std::string(GRAINLAB_SOURCE_DIR) + "/resources/bench/lammps";
+    std::string lammpsExecutable = "lmp";
+    bool scaling = false; ///< cost per grain-step at 1k, 8k, 32k, 128k grains instead
 };
 
+/// Declares the bench options on the `bench` subcommand.
+void addBenchOptions(CLI::App& command, BenchOptions& options);
+
 int runBench(const BenchOptions& options);
+
+/// Reads a LAMMPS data file of disks (atom_style sphere: id type diameter density x y z ix iy
+/// iz; an orthogonal box) into a state of disks with `parameters`. LAMMPS's y axis becomes the
+/// engine's x1 (the axial direction: in.bench compresses y) and x its x2; positions are taken
+/// relative to (xlo, ylo); grains keep the file's order (LAMMPS writes them spatially sorted).
+/// One shape per distinct diameter. The mass in the file must equal the engine's
+/// density * pi r^2 (in.prep uses `set density/disc`); velocities (Velocities section) are read.
+/// Throws std::runtime_error naming the file, the line and the problem.
+SimulationState readLammpsDisks(const std::string& path, const SimulationParameters& parameters);
 
 } // namespace grainlab

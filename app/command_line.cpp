@@ -23,12 +23,7 @@ int runCommandLine(int argc, char** argv) {
     BenchOptions bench;
     auto* benchCommand =
         app.add_subcommand("bench", "time the engine on a dense assembly under biaxial compression");
-    benchCommand->add_option("--shape", bench.shape, "oval, disk or both")->capture_default_str();
-    benchCommand->add_option("--grains", bench.grains, "number of grains")->capture_default_str();
-    benchCommand->add_option("--steps", bench.steps, "timed steps")->capture_default_str();
-    benchCommand->add_option("--threads", bench.threads, "thread counts, comma separated")
-        ->capture_default_str();
-    benchCommand->add_option("--seed", bench.seed, "random seed")->capture_default_str();
+    addBenchOptions(*benchCommand, bench);
 
     RunOptions run;
     auto* runCommand = app.add_subcommand("run", "run an experiment headless (no display needed)");

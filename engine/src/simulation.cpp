@@ -15,7 +15,141 @@
 namespace grainlab {
 namespace {
 
-int blockCount(std::size_t n) { return static_cast<int>((n + kReductionBlock - 1) / kReductionBlock); }
+int blockCount(std::size_t n) {
+    return static_cast<int>((n + kReductionBlock - 1) / kReductionBlock);
+}
+
+/// sin and cos of x, to about one unit in the last place for |x| < 10^6, written without calls
+/// or branches so that the integrator's grain loop vectorises (libm's sincos was ~11 % of a
+/// step). Every orientation's cos and sin come from here, so a restart sees the same bits.
+/// Reduction x = k pi/2 + r, |r| <= pi/4, with pi/2 in three parts (Cody and Waite): the first
+/// two have 33 significant bits, so k times them is exact for |k| < 2^20. Then the Taylor
+/// series of sin to r^17 and cos to r^18 (truncation below 1e-19 on |r| <= pi/4).
+inline void sinCos(double x, double& sine, double& cosine) {
+    constexpr double kTwoOverPi = 0.6366197723675814;
+    constexpr double kHalfPi1 = 0x1.921fb544p+0, kHalfPi2 = 0x1.0b4611a6p-34,
+                     kHalfPi3 = 0x1.3198a2e037073p-69;
+    constexpr double kRound = 0x1.8p52; // adding and subtracting it rounds to an integer
+    const double k = (x * kTwoOverPi + kRound) - kRound;
+    const double r = ((x - k * kHalfPi1) - k * kHalfPi2) - k * kHalfPi3;
+    const double r2 = r * r;
+    // 1/n! for n = 2..18.
+    constexpr double c2 = 1.0 / 2, c3 = 1.0 / 6, c4 = 1.0 / 24, c5 = 1.0 / 120, c6 = 1.0 / 720,
+                     c7 = 1.0 / 5040, c8 = 1.0 / 40320, c9 = 1.0 / 362880, c10 = 1.0 / 3628800,
+                     c11 = 1.0 / 39916800, c12 = 1.0 / 479001600, c13 = 1.0 / 6227020800,
+                     c14 = 1.0 / 87178291200, c15 = 1.0 / 1307674368000, c16 = 1.0 / 20922789888000,
+                     c17 = 1.0 / 355687428096000, c18 = 1.0 / 6402373705728000;
+    const double sr =
+        r + r * r2 *
+                (-c3 +
+                 r2 * (c5 +
+                       r2 * (-c7 + r2 * (c9 + r2 * (-c11 + r2 * (c13 + r2 * (-c15 + r2 * c17)))))));
+    const double cr =
+        1.0 +
+        r2 * (-c2 +
+              r2 * (c4 +
+                    r2 * (-c6 +
+                          r2 * (c8 +
+                                r2 * (-c10 + r2 * (c12 + r2 * (-c14 + r2 * (c16 - r2 * c18))))))));
+    // Quadrant q = k mod 4: (sin, cos) = (s, c), (c, -s), (-s, -c), (-c, s). An integer, not
+    // floor(): GCC vectorises no floor() under -ftrapping-math. Selects, not branches.
+    const std::int64_t q = static_cast<std::int64_t>(k) & 3;
+    const bool odd = (q & 1) != 0;
+    const double s0 = odd ? cr : sr, c0 = odd ? sr : cr;
+    sine = q >= 2 ? -s0 : s0;
+    cosine = ((q == 1) | (q == 2)) ? -c0 : c0;
+}
+
+/// Disk-disk geometry as diskContact computes it, without its branch (a coincident pair, which
+/// diskContact reports as not touching, is excluded by the caller's d^2 > 0 test).
+inline ContactGeometry diskGeometry(double radiusA, double radiusB, double dx, double dy) {
+    ContactGeometry g;
+    const double distance = std::sqrt(dx * dx + dy * dy);
+    const double inv = 1.0 / std::max(distance, std::numeric_limits<double>::min());
+    g.overlap = radiusA + radiusB - distance;
+    g.normalX = dx * inv;
+    g.normalY = dy * inv;
+    const double reach = radiusA - 0.5 * g.overlap;
+    g.pointX = reach * g.normalX;
+    g.pointY = reach * g.normalY;
+    return g;
+}
+
+/// What one touching (or open) pair contributes: forces, torques, history and the sums.
+struct PairResponse {
+    double force1 = 0, force2 = 0;            ///< force on B [N]
+    double normal = 0;                        ///< f_n [N]
+    double tangential = 0;                    ///< new stored f_t [N]
+    double torqueFirst = 0, torqueSecond = 0; ///< [N m]
+    double slipWork = 0;                      ///< [J]
+    bool sliding = false;
+    double s11 = 0, s12 = 0, s21 = 0, s22 = 0, e1 = 0, e2 = 0; ///< Love-Weber and Ê terms
+};
+
+struct PairKinematics {
+    double v1A, v2A, omegaA, v1B, v2B, omegaB; ///< fluctuating velocities [m/s], spins [rad/s]
+    double L0, L1, L2, L3;                     ///< velocity gradient, column-major [1/s]
+};
+
+/// The contact law for one pair (SPEC §3.3): linearContactForce's arithmetic, written so that
+/// every operation is done unconditionally and the cases are chosen by selects. GCC keeps
+/// -ftrapping-math, so it does not if-convert (vectorise) a loop whose arithmetic sits under a
+/// condition. Used by the vectorised pair loop and the scalar reference path alike.
+/// `inverseKt` = 1 / k_t (0 when frictionless).
+template <bool Frictional, bool Increment>
+inline PairResponse respond(const ContactGeometry& c, bool touching, double l1, double l2,
+                            double stored, const PairKinematics& k, const ContactLawParameters& law,
+                            double kt, double inverseKt) {
+    PairResponse r;
+    const double n1 = c.normalX, n2 = c.normalY, t1 = -n2, t2 = n1;
+    const double elastic = law.normalStiffness * c.overlap;
+    const double fn = touching ? elastic : 0.0;
+    double ft = 0.0;
+    if constexpr (Frictional) {
+        if constexpr (Increment) {
+            // Velocity of B relative to A at the contact point: fluctuating translation,
+            // rotation (omega x r in 2D is omega * (-r2, r1)) and the affine field L l.
+            const double pA1 = c.pointX, pA2 = c.pointY;
+            const double pB1 = pA1 - l1, pB2 = pA2 - l2;
+            const double vr1 =
+                k.v1B - k.v1A + k.L0 * l1 + k.L2 * l2 - k.omegaB * pB2 + k.omegaA * pA2;
+            const double vr2 =
+                k.v2B - k.v2A + k.L1 * l1 + k.L3 * l2 + k.omegaB * pB1 - k.omegaA * pA1;
+            // Increment Delta f_t = -k_t Delta u_t; at the Coulomb limit the elastic part is
+            // scaled back and the excess displacement (|trial| - limit) / k_t slid against it.
+            const double trial =
+                stored - law.tangentialStiffness * (vr1 * t1 + vr2 * t2) * law.timeStep;
+            const double limit = law.friction * fn;
+            const double size = std::fabs(trial);
+            const double clipped = std::copysign(limit, trial);
+            const double slid = limit * (size - limit) * inverseKt;
+            const bool slide = size > limit;
+            ft = touching ? (slide ? clipped : trial) : 0.0;
+            r.sliding = touching & slide;
+            r.slipWork = (touching & slide) ? slid : 0.0;
+        } else {
+            ft = touching ? stored : 0.0;
+        }
+    }
+    r.tangential = ft;
+    const double f1 = fn * n1 + ft * t1, f2 = fn * n2 + ft * t2;
+    r.force1 = f1;
+    r.force2 = f2;
+    r.normal = fn;
+    // Torques (x_c - x) x F: on A from -F at p_A, on B from F at p_A - l.
+    r.torqueFirst = -(c.pointX * f2 - c.pointY * f1);
+    r.torqueSecond = (c.pointX - l1) * f2 - (c.pointY - l2) * f1;
+    r.s11 = f1 * l1;
+    r.s12 = f1 * l2;
+    r.s21 = f2 * l1;
+    r.s22 = f2 * l2;
+    const double kn = law.normalStiffness;
+    const double stiff1 = l1 * l1 * (kn * n1 * n1 + kt * t1 * t1);
+    const double stiff2 = l2 * l2 * (kn * n2 * n2 + kt * t2 * t2);
+    r.e1 = touching ? stiff1 : 0.0;
+    r.e2 = touching ? stiff2 : 0.0;
+    return r;
+}
 
 } // namespace
 
@@ -80,9 +214,8 @@ std::string checkTimeStep(const std::vector<OvalShape>& shapes, const Simulation
                            shapes[lim.stiffestShape].width, p.stability.designCoordination);
     };
     if (dt > lim.limit) {
-        throw std::invalid_argument(
-            fmt::format("time step {:.4g} s is above {}; use at most {:.4g} s", dt, describe(),
-                        lim.limit));
+        throw std::invalid_argument(fmt::format(
+            "time step {:.4g} s is above {}; use at most {:.4g} s", dt, describe(), lim.limit));
     }
     if (dt > 0.8 * lim.limit) {
         return fmt::format("time step {:.4g} s is within 20 % of {}", dt, describe());
@@ -95,8 +228,8 @@ Simulation::Simulation(SimulationState state) : s_(std::move(state)) {
     if (s_.shapes.empty()) {
         throw std::invalid_argument("simulation: the shape table is empty");
     }
-    for (auto* v : {&s_.grains.x2, &s_.grains.theta, &s_.grains.v1, &s_.grains.v2,
-                    &s_.grains.omega}) {
+    for (auto* v :
+         {&s_.grains.x2, &s_.grains.theta, &s_.grains.v1, &s_.grains.v2, &s_.grains.omega}) {
         if (v->size() != n) {
             throw std::invalid_argument("simulation: grain arrays of unequal length");
         }
@@ -130,7 +263,8 @@ Simulation::Simulation(SimulationState state) : s_(std::move(state)) {
             if (s_.pairs.first[p] < 0 || s_.pairs.second[p] < 0 ||
                 s_.pairs.first[p] >= std::int32_t(n) || s_.pairs.second[p] >= std::int32_t(n)) {
                 throw std::invalid_argument(fmt::format("simulation: pair {} names a grain "
-                                                        "outside [0, {})", p, n));
+                                                        "outside [0, {})",
+                                                        p, n));
             }
         }
         buildPairIndex();
@@ -143,19 +277,11 @@ Simulation::Simulation(SimulationState state) : s_(std::move(state)) {
 void Simulation::derive() {
     const std::size_t n = s_.grains.size();
     const auto& p = s_.parameters;
-    mass_.resize(n);
-    inertia_.resize(n);
-    invMass_.resize(n);
-    invInertia_.resize(n);
-    halfWidth_.resize(n);
-    halfHeight_.resize(n);
-    dampTrans_.resize(n);
-    dampRot_.resize(n);
-    cosTheta_.resize(n);
-    sinTheta_.resize(n);
-    force1_.assign(n, 0.0);
-    force2_.assign(n, 0.0);
-    torque_.assign(n, 0.0);
+    for (auto* v : {&mass_, &inertia_, &halfWidth_, &halfHeight_, &dampTrans_, &dampRot_,
+                    &cosTheta_, &sinTheta_, &stepLimit_, &endOffset_, &sideOffset_, &endRadius_,
+                    &sideRadius_, &cosJunction_, &sinJunction_, &width_}) {
+        v->resize(n);
+    }
     allDisks_ = true;
     maxHalfWidth_ = 0;
     double minWidth = std::numeric_limits<double>::infinity();
@@ -167,22 +293,54 @@ void Simulation::derive() {
         const OvalShape& s = s_.shapes[s_.grains.shape[i]];
         mass_[i] = p.density * s.area;
         inertia_[i] = p.density * s.polarMoment;
-        invMass_[i] = 1.0 / mass_[i];
-        invInertia_[i] = 1.0 / inertia_[i];
         halfWidth_[i] = s.halfWidth;
         halfHeight_[i] = s.halfHeight;
         // Fraction beta of the critical damping of one grain on one normal spring (SPEC §3.6).
         dampTrans_[i] = 2.0 * std::sqrt(p.normalStiffness * mass_[i]);
         dampRot_[i] = 2.0 * std::sqrt(p.normalStiffness * s.halfWidth * s.halfWidth * inertia_[i]);
-        cosTheta_[i] = std::cos(s_.grains.theta[i]);
-        sinTheta_[i] = std::sin(s_.grains.theta[i]);
+        sinCos(s_.grains.theta[i], sinTheta_[i], cosTheta_[i]);
+        stepLimit_[i] = p.stability.maxStepFraction * s.halfHeight;
+        const OvalArcs arcs = ovalArcs(s);
+        endOffset_[i] = arcs.endOffset;
+        sideOffset_[i] = arcs.sideOffset;
+        endRadius_[i] = arcs.endRadius;
+        sideRadius_[i] = arcs.sideRadius;
+        cosJunction_[i] = arcs.cosJunction;
+        sinJunction_[i] = arcs.sinJunction;
+        width_[i] = arcs.width;
         maxHalfWidth_ = std::max(maxHalfWidth_, s.halfWidth);
         minWidth = std::min(minWidth, s.width);
     }
     skin_ = p.neighbourSkin > 0 ? p.neighbourSkin : 0.1 * minWidth;
+    prepareIntegration();
 }
 
-double Simulation::cellArea() const { return cellDeterminant(s_.cell); }
+void Simulation::prepareIntegration() {
+    // Per-grain coefficients of the velocity update v <- keep v + push F, so that the grain
+    // loop does no division. Viscous damping -c v' is integrated time-centred:
+    // v_new = ((1 - h) v + dt F / m) / (1 + h) with h = c dt / 2m.
+    const std::size_t n = s_.grains.size();
+    const double dt = s_.parameters.timeStep;
+    const double beta = s_.parameters.damping.coefficient;
+    const bool viscous = s_.parameters.damping.kind == DampingKind::GlobalViscous;
+    for (auto* v : {&keepTrans_, &pushTrans_, &keepRot_, &pushRot_, &workTrans_, &workRot_}) {
+        v->resize(n);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const double ht = viscous ? 0.5 * dt * beta * dampTrans_[i] / mass_[i] : 0.0;
+        const double hr = viscous ? 0.5 * dt * beta * dampRot_[i] / inertia_[i] : 0.0;
+        keepTrans_[i] = (1.0 - ht) / (1.0 + ht);
+        pushTrans_[i] = dt / mass_[i] / (1.0 + ht);
+        keepRot_[i] = (1.0 - hr) / (1.0 + hr);
+        pushRot_[i] = dt / inertia_[i] / (1.0 + hr);
+        workTrans_[i] = dt * beta * dampTrans_[i];
+        workRot_[i] = dt * beta * dampRot_[i];
+    }
+}
+
+double Simulation::cellArea() const {
+    return cellDeterminant(s_.cell);
+}
 
 void Simulation::refuseNarrowCell() const {
     const auto widths = cellWidths(s_.cell);
@@ -261,10 +419,22 @@ void Simulation::rebuildNeighbours() {
         for (int o1 = -1; o1 <= 1; ++o1) {
             for (int o2 = -1; o2 <= 1; ++o2) {
                 int c1 = b1 + o1, c2 = b2 + o2, k1 = 0, k2 = 0;
-                if (c1 < 0) { c1 += nb1; k1 = -1; }
-                if (c1 >= nb1) { c1 -= nb1; k1 = 1; }
-                if (c2 < 0) { c2 += nb2; k2 = -1; }
-                if (c2 >= nb2) { c2 -= nb2; k2 = 1; }
+                if (c1 < 0) {
+                    c1 += nb1;
+                    k1 = -1;
+                }
+                if (c1 >= nb1) {
+                    c1 -= nb1;
+                    k1 = 1;
+                }
+                if (c2 < 0) {
+                    c2 += nb2;
+                    k2 = -1;
+                }
+                if (c2 >= nb2) {
+                    c2 -= nb2;
+                    k2 = 1;
+                }
                 const int bin = c1 * nb2 + c2;
                 for (int q = binStart[bin]; q < binStart[bin + 1]; ++q) {
                     const std::int32_t j = binGrains[q];
@@ -296,8 +466,9 @@ void Simulation::rebuildNeighbours() {
     const PairArrays& old = s_.pairs;
     std::size_t q = 0;
     for (std::size_t p = 0; p < next.size(); ++p) {
-        while (q < old.size() && (old.first[q] < next.first[p] ||
-                                  (old.first[q] == next.first[p] && old.second[q] < next.second[p]))) {
+        while (q < old.size() &&
+               (old.first[q] < next.first[p] ||
+                (old.first[q] == next.first[p] && old.second[q] < next.second[p]))) {
             ++q;
         }
         if (q < old.size() && old.first[q] == next.first[p] && old.second[q] == next.second[p]) {
@@ -320,26 +491,31 @@ void Simulation::rebuildNeighbours() {
 
 void Simulation::buildPairIndex() {
     const std::size_t n = s_.grains.size(), pairCount = s_.pairs.size();
-    grainPairStart_.assign(n + 1, 0);
+    const auto& first = s_.pairs.first;
+    const auto& second = s_.pairs.second;
+    for (std::size_t p = 1; p < pairCount; ++p) {
+        if (first[p] < first[p - 1]) {
+            throw std::invalid_argument("simulation: the pairs must be sorted by first grain");
+        }
+    }
+    firstStart_.assign(n + 1, 0);
+    secondStart_.assign(n + 1, 0);
     for (std::size_t p = 0; p < pairCount; ++p) {
-        ++grainPairStart_[s_.pairs.first[p] + 1];
-        ++grainPairStart_[s_.pairs.second[p] + 1];
+        ++firstStart_[first[p] + 1];
+        ++secondStart_[second[p] + 1];
     }
     for (std::size_t i = 0; i < n; ++i) {
-        grainPairStart_[i + 1] += grainPairStart_[i];
+        firstStart_[i + 1] += firstStart_[i];
+        secondStart_[i + 1] += secondStart_[i];
     }
-    grainPairs_.resize(2 * pairCount);
-    std::vector<std::int32_t> fill(grainPairStart_.begin(), grainPairStart_.end() - 1);
+    secondPairs_.resize(pairCount);
+    std::vector<std::int32_t> fill(secondStart_.begin(), secondStart_.end() - 1);
     for (std::size_t p = 0; p < pairCount; ++p) {
-        grainPairs_[fill[s_.pairs.first[p]]++] = static_cast<std::int32_t>(2 * p);
-        grainPairs_[fill[s_.pairs.second[p]]++] = static_cast<std::int32_t>(2 * p + 1);
+        secondPairs_[fill[second[p]]++] = static_cast<std::int32_t>(p);
     }
-    pairForce1_.assign(pairCount, 0.0);
-    pairForce2_.assign(pairCount, 0.0);
-    torqueFirst_.assign(pairCount, 0.0);
-    torqueSecond_.assign(pairCount, 0.0);
-    normalForce_.assign(pairCount, 0.0);
-    slipWork_.assign(pairCount, 0.0);
+    for (auto* v : {&pairForce1_, &pairForce2_, &torqueFirst_, &torqueSecond_, &normalForce_}) {
+        v->assign(pairCount, 0.0);
+    }
     if (skinInUse_ <= 0.0) {
         const auto widths = cellWidths(s_.cell);
         skinInUse_ = std::min(skin_, 0.45 * (std::min(widths[0], widths[1]) - 4.0 * maxHalfWidth_));
@@ -361,96 +537,168 @@ void Simulation::evaluateForces(bool increment) {
             pairForces<false, false, false>();
         }
     }
-    gatherForces();
+}
+
+ContactGeometry Simulation::pairGeometry(std::size_t p, double l1, double l2) const {
+    const std::int32_t i = s_.pairs.first[p], j = s_.pairs.second[p];
+    if (allDisks_) {
+        return diskGeometry(halfWidth_[i], halfWidth_[j], l1, l2);
+    }
+    const OvalShape& A = s_.shapes[s_.grains.shape[i]];
+    const OvalShape& B = s_.shapes[s_.grains.shape[j]];
+    if (s_.parameters.allArcPairs) {
+        return ovalContactAllPairs(A, cosTheta_[i], sinTheta_[i], B, cosTheta_[j], sinTheta_[j], l1,
+                                   l2);
+    }
+    return ovalContact(A, cosTheta_[i], sinTheta_[i], B, cosTheta_[j], sinTheta_[j], l1, l2);
 }
 
 template <bool Disk, bool Frictional, bool Increment>
 void Simulation::pairForces() {
     const std::size_t pairCount = s_.pairs.size();
     const int blocks = blockCount(pairCount);
-    const auto& h = s_.cell;
-    const auto& L = s_.velocityGradient;
-    const auto& g = s_.grains;
-    auto& pairs = s_.pairs;
     const ContactLawParameters law{s_.parameters.normalStiffness, s_.parameters.tangentialStiffness,
                                    s_.parameters.friction, s_.parameters.timeStep};
-    const double kn = law.normalStiffness, kt = Frictional ? law.tangentialStiffness : 0.0;
+    const double kt = Frictional ? law.tangentialStiffness : 0.0;
+    const double inverseKt = kt > 0.0 ? 1.0 / kt : 0.0;
     const bool fullOvalTest = s_.parameters.allArcPairs;
-    blockSums_.assign(std::size_t(blocks) * kBlockSumWidth, 0.0);
-    double maxRatio = 0.0;
+    const double overlapLimit = s_.parameters.stability.maxOverlapFraction;
+    const double h0 = s_.cell[0], h1 = s_.cell[1], h2 = s_.cell[2], h3 = s_.cell[3];
+    const auto& Lg = s_.velocityGradient;
+    const double L0 = Lg[0], L1 = Lg[1], L2 = Lg[2], L3 = Lg[3];
+    // Raw pointers: the loop below is a simd loop over independent pairs.
+    const std::int32_t* first = s_.pairs.first.data();
+    const std::int32_t* second = s_.pairs.second.data();
+    const std::int32_t* shift1 = s_.pairs.shift1.data();
+    const std::int32_t* shift2 = s_.pairs.shift2.data();
+    double* stored = s_.pairs.tangentialForce.data();
+    std::uint8_t* sliding = s_.pairs.sliding.data();
+    const double* x1 = s_.grains.x1.data();
+    const double* x2 = s_.grains.x2.data();
+    const double* v1 = s_.grains.v1.data();
+    const double* v2 = s_.grains.v2.data();
+    const double* omega = s_.grains.omega.data();
+    const double* halfWidth = halfWidth_.data();
+    const double* cosT = cosTheta_.data();
+    const double* sinT = sinTheta_.data();
+    const double* endOffset = endOffset_.data();
+    const double* sideOffset = sideOffset_.data();
+    const double* endRadius = endRadius_.data();
+    const double* sideRadius = sideRadius_.data();
+    const double* cosJ = cosJunction_.data();
+    const double* sinJ = sinJunction_.data();
+    const double* width = width_.data();
+    double* force1 = pairForce1_.data();
+    double* force2 = pairForce2_.data();
+    double* torqueA = torqueFirst_.data();
+    double* torqueB = torqueSecond_.data();
+    double* normal = normalForce_.data();
+    blockSums_.resize(std::size_t(blocks) * kBlockSumWidth);
+    double maxExcess = -std::numeric_limits<double>::infinity();
 
-#pragma omp parallel for schedule(static) num_threads(s_.parameters.threads) reduction(max : maxRatio)
+    // One pair, as the vectorised loop and the reference path both compute it.
+    const auto kinematics = [&](std::int32_t i, std::int32_t j) {
+        return PairKinematics{v1[i], v2[i], omega[i], v1[j], v2[j], omega[j], L0, L1, L2, L3};
+    };
+
+#pragma omp parallel for schedule(static) num_threads(s_.parameters.threads)                       \
+    reduction(max                                                                                  \
+              : maxExcess)
     for (int b = 0; b < blocks; ++b) {
+        const std::size_t begin = std::size_t(b) * kReductionBlock;
+        const std::size_t end = std::min(pairCount, begin + kReductionBlock);
         double s11 = 0, s12 = 0, s21 = 0, s22 = 0, e1 = 0, e2 = 0, slip = 0;
-        const std::size_t end = std::min(pairCount, std::size_t(b + 1) * kReductionBlock);
-        for (std::size_t p = std::size_t(b) * kReductionBlock; p < end; ++p) {
-            const std::int32_t i = pairs.first[p], j = pairs.second[p];
-            const double k1 = pairs.shift1[p], k2 = pairs.shift2[p];
-            const double l1 = g.x1[j] + h[0] * k1 + h[2] * k2 - g.x1[i];
-            const double l2 = g.x2[j] + h[1] * k1 + h[3] * k2 - g.x2[i];
-            const double reach = halfWidth_[i] + halfWidth_[j];
-            ContactGeometry c;
-            if (l1 * l1 + l2 * l2 < reach * reach) {
+        double excess = -std::numeric_limits<double>::infinity();
+        double deferred = 0; // a double: GCC 12 vectorises no loop mixing int and double sums
+        // Pairs the quadrant kernel hands to the 16-pair reference (ovals; rare).
+        std::uint8_t needsReference[kReductionBlock];
+#pragma omp simd reduction(+ : s11, s12, s21, s22, e1, e2, slip, deferred) reduction(max : excess)
+        for (std::size_t p = begin; p < end; ++p) {
+            const std::int32_t i = first[p], j = second[p];
+            const double k1 = shift1[p], k2 = shift2[p];
+            const double l1 = x1[j] + h0 * k1 + h2 * k2 - x1[i];
+            const double l2 = x2[j] + h1 * k1 + h3 * k2 - x2[i];
+            const double reach = halfWidth[i] + halfWidth[j];
+            const double d2 = l1 * l1 + l2 * l2, reach2 = reach * reach;
+            const bool near = (d2 < reach2) & (d2 > 0.0);
+            // No aggregate is copied in this loop: GCC 12 vectorises none that does.
+            const QuadrantContact q = [&] {
                 if constexpr (Disk) {
-                    c = diskContact(halfWidth_[i], halfWidth_[j], l1, l2);
-                } else if (fullOvalTest) {
-                    c = ovalContactAllPairs(s_.shapes[g.shape[i]], g.theta[i],
-                                            s_.shapes[g.shape[j]], g.theta[j], l1, l2);
+                    return QuadrantContact{diskGeometry(halfWidth[i], halfWidth[j], l1, l2), false};
                 } else {
-                    c = ovalContact(s_.shapes[g.shape[i]], cosTheta_[i], sinTheta_[i],
-                                    s_.shapes[g.shape[j]], cosTheta_[j], sinTheta_[j], l1, l2);
+                    return ovalContactQuadrant(
+                        endOffset[i], sideOffset[i], endRadius[i], sideRadius[i], cosJ[i], sinJ[i],
+                        width[i], cosT[i], sinT[i], endOffset[j], sideOffset[j], endRadius[j],
+                        sideRadius[j], cosJ[j], sinJ[j], width[j], cosT[j], sinT[j], l1, l2);
+                }
+            }();
+            const ContactGeometry& c = q.geometry;
+            const bool reference = !Disk & near & (q.needsReference | fullOvalTest);
+            const bool touching = near & !reference & (c.overlap > 0.0);
+            const double old = stored[p];
+            const PairResponse r = respond<Frictional, Increment>(
+                c, touching, l1, l2, old, kinematics(i, j), law, kt, inverseKt);
+            // A deferred pair keeps its history for the reference path below.
+            stored[p] = reference ? old : r.tangential;
+            sliding[p] = r.sliding;
+            needsReference[p - begin] = reference;
+            deferred += reference ? 1.0 : 0.0;
+            force1[p] = r.force1;
+            force2[p] = r.force2;
+            torqueA[p] = r.torqueFirst;
+            torqueB[p] = r.torqueSecond;
+            normal[p] = r.normal;
+            s11 += r.s11;
+            s12 += r.s12;
+            s21 += r.s21;
+            s22 += r.s22;
+            e1 += r.e1;
+            e2 += r.e2;
+            slip += r.slipWork;
+            const double smaller = 2.0 * std::min(halfWidth[i], halfWidth[j]);
+            const double over = c.overlap - overlapLimit * smaller;
+            excess = std::max(excess, touching ? over : excess);
+        }
+        if constexpr (!Disk) {
+            // The reference path, in pair order after the vector loop: fixed for any threads.
+            for (std::size_t p = begin; deferred > 0 && p < end; ++p) {
+                if (!needsReference[p - begin]) {
+                    continue;
+                }
+                deferred -= 1.0;
+                const std::int32_t i = first[p], j = second[p];
+                const double k1 = shift1[p], k2 = shift2[p];
+                const double l1 = x1[j] + h0 * k1 + h2 * k2 - x1[i];
+                const double l2 = x2[j] + h1 * k1 + h3 * k2 - x2[i];
+                const OvalShape& A = s_.shapes[s_.grains.shape[i]];
+                const OvalShape& B = s_.shapes[s_.grains.shape[j]];
+                ContactGeometry c =
+                    ovalContactAllPairs(A, cosT[i], sinT[i], B, cosT[j], sinT[j], l1, l2);
+                const bool touching = c.overlap > 0.0;
+                if (!touching) {
+                    c = ContactGeometry{0.0, 1.0, 0.0, 0.0, 0.0}; // finite numbers for the law
+                }
+                const PairResponse r = respond<Frictional, Increment>(
+                    c, touching, l1, l2, stored[p], kinematics(i, j), law, kt, inverseKt);
+                stored[p] = r.tangential;
+                sliding[p] = r.sliding;
+                force1[p] = r.force1;
+                force2[p] = r.force2;
+                torqueA[p] = r.torqueFirst;
+                torqueB[p] = r.torqueSecond;
+                normal[p] = r.normal;
+                s11 += r.s11;
+                s12 += r.s12;
+                s21 += r.s21;
+                s22 += r.s22;
+                e1 += r.e1;
+                e2 += r.e2;
+                slip += r.slipWork;
+                if (touching) {
+                    excess = std::max(excess, c.overlap - overlapLimit * 2.0 *
+                                                              std::min(halfWidth[i], halfWidth[j]));
                 }
             }
-            if (!(c.overlap > 0.0)) {
-                pairs.tangentialForce[p] = 0.0; // an open contact forgets its history
-                pairs.sliding[p] = 0;
-                pairForce1_[p] = pairForce2_[p] = torqueFirst_[p] = torqueSecond_[p] = 0.0;
-                normalForce_[p] = 0.0;
-                slipWork_[p] = 0.0;
-                continue;
-            }
-            const double n1 = c.normalX, n2 = c.normalY, t1 = -n2, t2 = n1;
-            const double fn = kn * c.overlap;
-            double ft = 0.0;
-            if constexpr (Frictional) {
-                if constexpr (Increment) {
-                    // Velocity of B relative to A at the contact point: fluctuating translation,
-                    // rotation (omega x r in 2D is omega * (-r2, r1)) and the affine field L l.
-                    const double pA1 = c.pointX, pA2 = c.pointY;
-                    const double pB1 = pA1 - l1, pB2 = pA2 - l2;
-                    const double vr1 = g.v1[j] - g.v1[i] + L[0] * l1 + L[2] * l2 -
-                                       g.omega[j] * pB2 + g.omega[i] * pA2;
-                    const double vr2 = g.v2[j] - g.v2[i] + L[1] * l1 + L[3] * l2 +
-                                       g.omega[j] * pB1 - g.omega[i] * pA1;
-                    const ContactForce f =
-                        linearContactForce(c.overlap, vr1 * t1 + vr2 * t2,
-                                           pairs.tangentialForce[p], law);
-                    ft = f.tangential;
-                    pairs.tangentialForce[p] = ft;
-                    pairs.sliding[p] = f.sliding;
-                    slipWork_[p] = f.slipWork;
-                    slip += f.slipWork;
-                } else {
-                    ft = pairs.tangentialForce[p];
-                }
-            } else {
-                pairs.tangentialForce[p] = 0.0;
-                pairs.sliding[p] = 0;
-            }
-            const double f1 = fn * n1 + ft * t1, f2 = fn * n2 + ft * t2;
-            pairForce1_[p] = f1;
-            pairForce2_[p] = f2;
-            normalForce_[p] = fn;
-            // Torques (x_c - x) x F: on A from -F at p_A, on B from F at p_A - l.
-            torqueFirst_[p] = -(c.pointX * f2 - c.pointY * f1);
-            torqueSecond_[p] = (c.pointX - l1) * f2 - (c.pointY - l2) * f1;
-            s11 += f1 * l1;
-            s12 += f1 * l2;
-            s21 += f2 * l1;
-            s22 += f2 * l2;
-            e1 += l1 * l1 * (kn * n1 * n1 + kt * t1 * t1);
-            e2 += l2 * l2 * (kn * n2 * n2 + kt * t2 * t2);
-            maxRatio = std::max(maxRatio, c.overlap / (2.0 * std::min(halfWidth_[i], halfWidth_[j])));
         }
         double* out = &blockSums_[std::size_t(b) * kBlockSumWidth];
         out[0] = s11;
@@ -460,6 +708,7 @@ void Simulation::pairForces() {
         out[4] = e1;
         out[5] = e2;
         out[6] = slip;
+        maxExcess = std::max(maxExcess, excess);
     }
     double sum[kBlockSumWidth] = {};
     for (int b = 0; b < blocks; ++b) {
@@ -475,30 +724,32 @@ void Simulation::pairForces() {
     if constexpr (Increment) {
         s_.frictionWork += sum[6];
     }
-    maxOverlapRatio_ = maxRatio;
+    overlapExcess_ = maxExcess;
 }
 
-void Simulation::gatherForces() {
-    const std::int64_t n = static_cast<std::int64_t>(s_.grains.size());
-#pragma omp parallel for schedule(static) num_threads(s_.parameters.threads)
-    for (std::int64_t i = 0; i < n; ++i) {
-        double f1 = 0, f2 = 0, m = 0;
-        for (std::int32_t q = grainPairStart_[i]; q < grainPairStart_[i + 1]; ++q) {
-            const std::int32_t code = grainPairs_[q];
-            const std::int32_t p = code >> 1;
-            if (code & 1) { // grain is B: +F
-                f1 += pairForce1_[p];
-                f2 += pairForce2_[p];
-                m += torqueSecond_[p];
-            } else {        // grain is A: -F
-                f1 -= pairForce1_[p];
-                f2 -= pairForce2_[p];
-                m += torqueFirst_[p];
-            }
+void Simulation::gatherForces(std::vector<double>& f1, std::vector<double>& f2,
+                              std::vector<double>& torque) const {
+    const std::size_t n = s_.grains.size();
+    f1.assign(n, 0.0);
+    f2.assign(n, 0.0);
+    torque.assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        // The same order as integrateGrains: pairs where i is first, then where it is second.
+        double a = 0, b = 0, m = 0;
+        for (std::int32_t p = firstStart_[i]; p < firstStart_[i + 1]; ++p) {
+            a -= pairForce1_[p];
+            b -= pairForce2_[p];
+            m += torqueFirst_[p];
         }
-        force1_[i] = f1;
-        force2_[i] = f2;
-        torque_[i] = m;
+        for (std::int32_t q = secondStart_[i]; q < secondStart_[i + 1]; ++q) {
+            const std::int32_t p = secondPairs_[q];
+            a += pairForce1_[p];
+            b += pairForce2_[p];
+            m += torqueSecond_[p];
+        }
+        f1[i] = a;
+        f2[i] = b;
+        torque[i] = m;
     }
 }
 
@@ -541,116 +792,181 @@ void Simulation::updateServo() {
 }
 
 void Simulation::integrate() {
-    const std::int64_t n = static_cast<std::int64_t>(s_.grains.size());
     const double dt = s_.parameters.timeStep;
     const auto L = s_.velocityGradient;
-    auto& g = s_.grains;
     // Cell update h <- (I + L dt) h; the affine map from the last rebuild, F = h h_ref^-1.
     const auto h = s_.cell;
-    const std::array<double, 4> hNext = {h[0] + dt * (L[0] * h[0] + L[2] * h[1]),
-                                         h[1] + dt * (L[1] * h[0] + L[3] * h[1]),
-                                         h[2] + dt * (L[0] * h[2] + L[2] * h[3]),
-                                         h[3] + dt * (L[1] * h[2] + L[3] * h[3])};
+    const std::array<double, 4> hNext = {
+        h[0] + dt * (L[0] * h[0] + L[2] * h[1]), h[1] + dt * (L[1] * h[0] + L[3] * h[1]),
+        h[2] + dt * (L[0] * h[2] + L[2] * h[3]), h[3] + dt * (L[1] * h[2] + L[3] * h[3])};
     const auto F = cellProduct(hNext, cellInverse(s_.referenceCell));
-    const DampingKind damping = s_.parameters.damping.kind;
-    const double beta = s_.parameters.damping.coefficient;
+    const bool oval = !allDisks_;
+    switch (s_.parameters.damping.kind) {
+    case DampingKind::GlobalViscous:
+        oval ? integrateGrains<DampingKind::GlobalViscous, true>(F)
+             : integrateGrains<DampingKind::GlobalViscous, false>(F);
+        break;
+    case DampingKind::CundallLocal:
+        oval ? integrateGrains<DampingKind::CundallLocal, true>(F)
+             : integrateGrains<DampingKind::CundallLocal, false>(F);
+        break;
+    default:
+        oval ? integrateGrains<DampingKind::None, true>(F)
+             : integrateGrains<DampingKind::None, false>(F);
+        break;
+    }
+    s_.cell = hNext;
+    if (!runaway_) {
+        return;
+    }
+    auto& g = s_.grains;
     const double stepFraction = s_.parameters.stability.maxStepFraction;
-    const int blocks = blockCount(std::size_t(n));
-    grainBlockSums_.assign(std::size_t(blocks), 0.0);
-    double maxDrift2 = 0.0, maxStep = 0.0;
-    bool bad = false;
-
-#pragma omp parallel for schedule(static) num_threads(s_.parameters.threads) \
-    reduction(max : maxDrift2, maxStep) reduction(|| : bad)
-    for (int b = 0; b < blocks; ++b) {
-        double dampingWork = 0.0;
-        const std::int64_t end = std::min<std::int64_t>(n, std::int64_t(b + 1) * kReductionBlock);
-        for (std::int64_t i = std::int64_t(b) * kReductionBlock; i < end; ++i) {
-            double f1 = force1_[i], f2 = force2_[i], m = torque_[i];
-            double v1 = g.v1[i], v2 = g.v2[i], w = g.omega[i];
-            if (damping == DampingKind::GlobalViscous) {
-                // Viscous force -c v' integrated time-centred: v_new = ((1 - c dt/2m) v +
-                // dt F/m) / (1 + c dt/2m). Damping acts on fluctuations only.
-                const double ht = 0.5 * dt * beta * dampTrans_[i] * invMass_[i];
-                const double hr = 0.5 * dt * beta * dampRot_[i] * invInertia_[i];
-                const double n1 = ((1.0 - ht) * v1 + dt * f1 * invMass_[i]) / (1.0 + ht);
-                const double n2 = ((1.0 - ht) * v2 + dt * f2 * invMass_[i]) / (1.0 + ht);
-                const double nw = ((1.0 - hr) * w + dt * m * invInertia_[i]) / (1.0 + hr);
-                const double a1 = 0.5 * (v1 + n1), a2 = 0.5 * (v2 + n2), aw = 0.5 * (w + nw);
-                dampingWork += dt * beta * (dampTrans_[i] * (a1 * a1 + a2 * a2) + dampRot_[i] * aw * aw);
-                v1 = n1;
-                v2 = n2;
-                w = nw;
-            } else {
-                if (damping == DampingKind::CundallLocal) {
-                    // Cundall's local damping: each component's force reduced by alpha |F|
-                    // against the current velocity.
-                    const double d1 = -beta * std::fabs(f1) * (v1 > 0 ? 1.0 : (v1 < 0 ? -1.0 : 0.0));
-                    const double d2 = -beta * std::fabs(f2) * (v2 > 0 ? 1.0 : (v2 < 0 ? -1.0 : 0.0));
-                    const double dm = -beta * std::fabs(m) * (w > 0 ? 1.0 : (w < 0 ? -1.0 : 0.0));
-                    f1 += d1;
-                    f2 += d2;
-                    m += dm;
-                    const double n1 = v1 + dt * f1 * invMass_[i], n2 = v2 + dt * f2 * invMass_[i];
-                    const double nw = w + dt * m * invInertia_[i];
-                    dampingWork -= dt * (d1 * 0.5 * (v1 + n1) + d2 * 0.5 * (v2 + n2) +
-                                         dm * 0.5 * (w + nw));
-                    v1 = n1;
-                    v2 = n2;
-                    w = nw;
-                } else {
-                    v1 += dt * f1 * invMass_[i];
-                    v2 += dt * f2 * invMass_[i];
-                    w += dt * m * invInertia_[i];
-                }
-            }
-            const double x1 = g.x1[i], x2 = g.x2[i];
-            const double y1 = x1 + dt * (v1 + L[0] * x1 + L[2] * x2);
-            const double y2 = x2 + dt * (v2 + L[1] * x1 + L[3] * x2);
-            const double th = g.theta[i] + dt * w;
-            g.v1[i] = v1;
-            g.v2[i] = v2;
-            g.omega[i] = w;
-            g.x1[i] = y1;
-            g.x2[i] = y2;
-            g.theta[i] = th;
-            cosTheta_[i] = std::cos(th);
-            sinTheta_[i] = std::sin(th);
-            // Displacement beyond the affine motion since the last rebuild.
-            const double r1 = s_.reference1[i], r2 = s_.reference2[i];
-            const double d1 = y1 - (F[0] * r1 + F[2] * r2), d2 = y2 - (F[1] * r1 + F[3] * r2);
-            maxDrift2 = std::max(maxDrift2, d1 * d1 + d2 * d2);
-            const double travel = dt * (std::sqrt(v1 * v1 + v2 * v2) + std::fabs(w) * halfWidth_[i]);
-            maxStep = std::max(maxStep, travel / (stepFraction * halfHeight_[i]));
-            bad = bad || !std::isfinite(y1) || !std::isfinite(y2) || !std::isfinite(th) ||
-                  !std::isfinite(v1) || !std::isfinite(v2) || !std::isfinite(w);
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        const double v = std::hypot(g.v1[i], g.v2[i]);
+        if (!std::isfinite(g.x1[i]) || !std::isfinite(g.x2[i]) || !std::isfinite(g.theta[i]) ||
+            !std::isfinite(v) || !std::isfinite(g.omega[i])) {
+            throw SimulationError(s_.step + 1, std::int32_t(i),
+                                  "non-finite position or velocity (numerical blow-up)");
         }
-        grainBlockSums_[b] = dampingWork;
+        const double travel = dt * (v + std::fabs(g.omega[i]) * halfWidth_[i]);
+        if (travel > stepLimit_[i]) {
+            throw SimulationError(
+                s_.step + 1, std::int32_t(i),
+                fmt::format("runaway motion: moved {:.3g} m in one step, more than {} of its "
+                            "half-height {:.3g} m (speed {:.3g} m/s, spin {:.3g} rad/s); "
+                            "kinetic energy is growing without bound",
+                            travel, stepFraction, halfHeight_[i], v, g.omega[i]));
+        }
+    }
+}
+
+template <DampingKind Damping, bool Oval>
+void Simulation::integrateGrains(const std::array<double, 4>& F) {
+    const std::size_t n = s_.grains.size();
+    const double dt = s_.parameters.timeStep;
+    const double beta = s_.parameters.damping.coefficient;
+    const auto& Lg = s_.velocityGradient;
+    const double L0 = Lg[0], L1 = Lg[1], L2 = Lg[2], L3 = Lg[3];
+    const double F0 = F[0], F1 = F[1], F2 = F[2], F3 = F[3];
+    auto& g = s_.grains;
+    double* x1 = g.x1.data();
+    double* x2 = g.x2.data();
+    double* theta = g.theta.data();
+    double* v1 = g.v1.data();
+    double* v2 = g.v2.data();
+    double* omega = g.omega.data();
+    double* cosT = cosTheta_.data();
+    double* sinT = sinTheta_.data();
+    const double* ref1 = s_.reference1.data();
+    const double* ref2 = s_.reference2.data();
+    const double* keepT = keepTrans_.data();
+    const double* pushT = pushTrans_.data();
+    const double* keepR = keepRot_.data();
+    const double* pushR = pushRot_.data();
+    const double* workT = workTrans_.data();
+    const double* workR = workRot_.data();
+    const double* halfWidth = halfWidth_.data();
+    const double* stepLimit = stepLimit_.data();
+    const double* pairF1 = pairForce1_.data();
+    const double* pairF2 = pairForce2_.data();
+    const double* pairTA = torqueFirst_.data();
+    const double* pairTB = torqueSecond_.data();
+    const std::int32_t* firstStart = firstStart_.data();
+    const std::int32_t* secondStart = secondStart_.data();
+    const std::int32_t* secondPairs = secondPairs_.data();
+    const int blocks = blockCount(n);
+    grainBlockSums_.resize(std::size_t(blocks));
+    double maxDrift2 = 0.0;
+    double bad = 0.0; // grains that ran away or became non-finite
+
+#pragma omp parallel for schedule(static) num_threads(s_.parameters.threads)                     \
+    reduction(max : maxDrift2) reduction(+ : bad)
+    for (int b = 0; b < blocks; ++b) {
+        const std::size_t begin = std::size_t(b) * kReductionBlock;
+        const std::size_t end = std::min(n, begin + kReductionBlock);
+        // 1. Gather the per-pair forces onto the block's grains in a fixed order: the pairs
+        //    where the grain is first (contiguous, -F), then those where it is second (+F).
+        double force1[kReductionBlock], force2[kReductionBlock], torque[kReductionBlock];
+        for (std::size_t i = begin; i < end; ++i) {
+            double a = 0, c = 0, m = 0;
+            for (std::int32_t p = firstStart[i]; p < firstStart[i + 1]; ++p) {
+                a -= pairF1[p];
+                c -= pairF2[p];
+                m += pairTA[p];
+            }
+            for (std::int32_t q = secondStart[i]; q < secondStart[i + 1]; ++q) {
+                const std::int32_t p = secondPairs[q];
+                a += pairF1[p];
+                c += pairF2[p];
+                m += pairTB[p];
+            }
+            force1[i - begin] = a;
+            force2[i - begin] = c;
+            torque[i - begin] = m;
+        }
+        // 2. Central differences on the fluctuating velocity; positions also move with the
+        //    affine field L x. Vectorised over the block.
+        double work = 0.0;
+#pragma omp simd reduction(+ : work, bad) reduction(max : maxDrift2)
+        for (std::size_t i = begin; i < end; ++i) {
+            double f1 = force1[i - begin], f2 = force2[i - begin], m = torque[i - begin];
+            const double u1 = v1[i], u2 = v2[i], w = omega[i];
+            double n1, n2, nw;
+            if constexpr (Damping == DampingKind::GlobalViscous) {
+                n1 = keepT[i] * u1 + pushT[i] * f1;
+                n2 = keepT[i] * u2 + pushT[i] * f2;
+                nw = keepR[i] * w + pushR[i] * m;
+                const double a1 = 0.5 * (u1 + n1), a2 = 0.5 * (u2 + n2), aw = 0.5 * (w + nw);
+                work += workT[i] * (a1 * a1 + a2 * a2) + workR[i] * aw * aw;
+            } else if constexpr (Damping == DampingKind::CundallLocal) {
+                // Cundall's local damping: each component's force reduced by alpha |F| against
+                // the current velocity.
+                const double d1 = -beta * std::fabs(f1) * (u1 > 0 ? 1.0 : (u1 < 0 ? -1.0 : 0.0));
+                const double d2 = -beta * std::fabs(f2) * (u2 > 0 ? 1.0 : (u2 < 0 ? -1.0 : 0.0));
+                const double dm = -beta * std::fabs(m) * (w > 0 ? 1.0 : (w < 0 ? -1.0 : 0.0));
+                f1 += d1;
+                f2 += d2;
+                m += dm;
+                n1 = u1 + pushT[i] * f1;
+                n2 = u2 + pushT[i] * f2;
+                nw = w + pushR[i] * m;
+                work -= dt * (d1 * 0.5 * (u1 + n1) + d2 * 0.5 * (u2 + n2) + dm * 0.5 * (w + nw));
+            } else {
+                n1 = u1 + pushT[i] * f1;
+                n2 = u2 + pushT[i] * f2;
+                nw = w + pushR[i] * m;
+            }
+            const double y1 = x1[i], y2 = x2[i];
+            const double z1 = y1 + dt * (n1 + L0 * y1 + L2 * y2);
+            const double z2 = y2 + dt * (n2 + L1 * y1 + L3 * y2);
+            const double th = theta[i] + dt * nw;
+            v1[i] = n1;
+            v2[i] = n2;
+            omega[i] = nw;
+            x1[i] = z1;
+            x2[i] = z2;
+            theta[i] = th;
+            if constexpr (Oval) {
+                sinCos(th, sinT[i], cosT[i]);
+            }
+            // Displacement beyond the affine motion since the last rebuild.
+            const double r1 = ref1[i], r2 = ref2[i];
+            const double d1 = z1 - (F0 * r1 + F2 * r2), d2 = z2 - (F1 * r1 + F3 * r2);
+            maxDrift2 = std::max(maxDrift2, d1 * d1 + d2 * d2);
+            // Runaway or non-finite (a NaN fails every comparison): the caller finds the grain.
+            const double travel =
+                dt * (std::sqrt(n1 * n1 + n2 * n2) + std::fabs(nw) * halfWidth[i]);
+            const bool fine = (travel <= stepLimit[i]) & (std::fabs(z1) + std::fabs(z2) < 1e300) &
+                              (std::fabs(th) < 1e300);
+            bad += fine ? 0.0 : 1.0;
+        }
+        grainBlockSums_[b] = work;
     }
     for (int b = 0; b < blocks; ++b) {
         s_.dampingWork += grainBlockSums_[b];
     }
-    s_.cell = hNext;
     maxDrift_ = std::sqrt(maxDrift2);
-    if (bad || !(maxStep <= 1.0)) {
-        for (std::int64_t i = 0; i < n; ++i) {
-            const double v = std::hypot(g.v1[i], g.v2[i]);
-            if (!std::isfinite(g.x1[i]) || !std::isfinite(g.x2[i]) || !std::isfinite(g.theta[i]) ||
-                !std::isfinite(v) || !std::isfinite(g.omega[i])) {
-                throw SimulationError(s_.step + 1, std::int32_t(i),
-                                      "non-finite position or velocity (numerical blow-up)");
-            }
-            const double travel = dt * (v + std::fabs(g.omega[i]) * halfWidth_[i]);
-            if (travel > stepFraction * halfHeight_[i]) {
-                throw SimulationError(
-                    s_.step + 1, std::int32_t(i),
-                    fmt::format("runaway motion: moved {:.3g} m in one step, more than {} of its "
-                                "half-height {:.3g} m (speed {:.3g} m/s, spin {:.3g} rad/s); "
-                                "kinetic energy is growing without bound",
-                                travel, stepFraction, halfHeight_[i], v, g.omega[i]));
-                }
-        }
-    }
+    runaway_ = bad != 0.0;
 }
 
 bool Simulation::neighboursStale() const {
@@ -663,10 +979,10 @@ bool Simulation::neighboursStale() const {
 }
 
 void Simulation::checkOverlaps() const {
-    const double limit = s_.parameters.stability.maxOverlapFraction;
-    if (maxOverlapRatio_ <= limit) {
+    if (!(overlapExcess_ > 0.0)) {
         return;
     }
+    const double limit = s_.parameters.stability.maxOverlapFraction;
     const auto network = contactNetwork();
     for (const ContactRecord& c : network.contacts) {
         const double ratio =
@@ -727,6 +1043,7 @@ void Simulation::setDamping(const DampingParameters& damping) {
             fmt::format("damping coefficient {}: must be >= 0", damping.coefficient));
     }
     s_.parameters.damping = damping;
+    prepareIntegration();
 }
 
 void Simulation::setThreads(int threads) {
@@ -743,7 +1060,9 @@ void Simulation::clearVelocities() {
     std::fill(g.omega.begin(), g.omega.end(), 0.0);
 }
 
-SimulationState Simulation::state() const { return s_; }
+SimulationState Simulation::state() const {
+    return s_;
+}
 
 std::size_t Simulation::contactCount() const {
     return static_cast<std::size_t>(
@@ -770,8 +1089,8 @@ ContactNetwork Simulation::contactNetwork() const {
     net.x2.resize(n);
     net.grainArea.resize(n);
     net.grainMass = mass_;
-    net.netForce1 = force1_;
-    net.netForce2 = force2_;
+    std::vector<double> torque;
+    gatherForces(net.netForce1, net.netForce2, torque);
     std::vector<std::int32_t> wrap1(n), wrap2(n);
     for (std::size_t i = 0; i < n; ++i) {
         const double s1 = (h[3] * g.x1[i] - h[2] * g.x2[i]) / det;
@@ -791,16 +1110,8 @@ ContactNetwork Simulation::contactNetwork() const {
         const double k1 = s_.pairs.shift1[p], k2 = s_.pairs.shift2[p];
         const double l1 = g.x1[j] + h[0] * k1 + h[2] * k2 - g.x1[i];
         const double l2 = g.x2[j] + h[1] * k1 + h[3] * k2 - g.x2[i];
-        ContactGeometry c;
-        if (allDisks_) {
-            c = diskContact(halfWidth_[i], halfWidth_[j], l1, l2);
-        } else if (s_.parameters.allArcPairs) {
-            c = ovalContactAllPairs(s_.shapes[g.shape[i]], g.theta[i], s_.shapes[g.shape[j]],
-                                    g.theta[j], l1, l2);
-        } else {
-            c = ovalContact(s_.shapes[g.shape[i]], cosTheta_[i], sinTheta_[i],
-                            s_.shapes[g.shape[j]], cosTheta_[j], sinTheta_[j], l1, l2);
-        }
+        // The geometry the pair loop used for this force.
+        const ContactGeometry c = pairGeometry(p, l1, l2);
         ContactRecord r;
         r.first = i;
         r.second = j;

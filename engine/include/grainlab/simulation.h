@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "grainlab/contact_geometry.h"
 #include "grainlab/contact_network.h"
 #include "grainlab/periodic_cell.h"
 #include "grainlab/simulation_state.h"
@@ -48,11 +49,11 @@ struct Stress {
 };
 
 struct Energies {
-    double kinetic = 0;        ///< fluctuating translational + rotational [J]
-    double elastic = 0;        ///< spring energy of the contacts [J]
-    double boundaryWork = 0;   ///< work done by the cell on the assembly [J]
-    double frictionWork = 0;   ///< cumulative sliding dissipation [J]
-    double dampingWork = 0;    ///< cumulative damping dissipation [J]
+    double kinetic = 0;      ///< fluctuating translational + rotational [J]
+    double elastic = 0;      ///< spring energy of the contacts [J]
+    double boundaryWork = 0; ///< work done by the cell on the assembly [J]
+    double frictionWork = 0; ///< cumulative sliding dissipation [J]
+    double dampingWork = 0;  ///< cumulative damping dissipation [J]
 };
 
 class Simulation {
@@ -105,38 +106,55 @@ public:
 
 private:
     void derive();
+    void prepareIntegration();
     void rebuildNeighbours();
     bool neighboursStale() const;
     void evaluateForces(bool incrementTangential);
     void integrate();
+    template <DampingKind Damping, bool Oval>
+    void integrateGrains(const std::array<double, 4>& F);
     void updateServo();
     void buildPairIndex();
     void checkOverlaps() const;
     template <bool Disk, bool Frictional, bool Increment>
     void pairForces();
-    void gatherForces();
+    /// Contact geometry of pair p with branch vector l, exactly as the pair loop computes it.
+    ContactGeometry pairGeometry(std::size_t p, double l1, double l2) const;
+    /// Net contact force and torque on every grain, summed in the fixed order of the pair loop.
+    void gatherForces(std::vector<double>& f1, std::vector<double>& f2,
+                      std::vector<double>& torque) const;
     void refuseNarrowCell() const;
 
     static constexpr int kBlockSumWidth = 7; ///< per block: 4 stress, 2 stiffness, slip work
 
     SimulationState s_;
     // Derived per grain (rebuilt by derive()).
-    std::vector<double> mass_, inertia_, invMass_, invInertia_;
-    std::vector<double> halfWidth_, halfHeight_;
-    std::vector<double> dampTrans_, dampRot_;
-    std::vector<double> cosTheta_, sinTheta_;
-    std::vector<double> force1_, force2_, torque_;
-    // Derived per pair.
+    std::vector<double> mass_, inertia_;         ///< [kg], [kg m^2]
+    std::vector<double> halfWidth_, halfHeight_; ///< a, b [m]
+    std::vector<double> dampTrans_, dampRot_;    ///< 2 sqrt(k_n m) [kg/s], 2 sqrt(k_n a^2 I)
+    std::vector<double> cosTheta_, sinTheta_;    ///< of the current orientation
+    std::vector<double> stepLimit_;              ///< largest travel in one step [m]
+    // Oval arcs per grain (copies of the shape's OvalArcs), read by the vectorised pair loop.
+    std::vector<double> endOffset_, sideOffset_, endRadius_, sideRadius_; ///< [m]
+    std::vector<double> cosJunction_, sinJunction_, width_;
+    // Integration coefficients per grain (prepareIntegration()): v <- keep v + push F, and the
+    // damping power factor, for translation and rotation.
+    std::vector<double> keepTrans_, pushTrans_, keepRot_,
+        pushRot_;                             ///< [-], [s/kg], [-], [s/kg m^2]
+    std::vector<double> workTrans_, workRot_; ///< dt beta c [J s^2/m^2], [J s^2]
+    // Derived per pair (written by the pair loop, read by the gather in integrate()).
     std::vector<double> pairForce1_, pairForce2_, torqueFirst_, torqueSecond_, normalForce_;
-    std::vector<double> slipWork_;
-    std::vector<std::int32_t> grainPairStart_, grainPairs_;  ///< CSR: 2*pair + (1 if second)
+    // Pairs are sorted by first grain: grain i is first in [firstStart_[i], firstStart_[i+1]);
+    // it is second in the pairs secondPairs_[secondStart_[i] .. secondStart_[i+1]).
+    std::vector<std::int32_t> firstStart_, secondStart_, secondPairs_;
     std::vector<double> blockSums_, grainBlockSums_;
     bool allDisks_ = true;
     double maxHalfWidth_ = 0;
     double skin_ = 0;          ///< requested Verlet skin [m]
     double skinInUse_ = 0;     ///< skin of the current list (smaller in a narrow cell) [m]
     double maxDrift_ = 0;      ///< largest non-affine displacement since the rebuild [m]
-    double maxOverlapRatio_ = 0; ///< largest overlap / smaller width at the last evaluation
+    double overlapExcess_ = 0; ///< max of overlap - limit fraction * smaller width [m]
+    bool runaway_ = false;     ///< a grain moved too far or became non-finite this step
     Stress stress_;
     std::array<double, 2> stiffness_{};
     std::int64_t rebuilds_ = 0;
