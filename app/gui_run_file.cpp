@@ -76,34 +76,8 @@ SnapshotPtr runFileSnapshot(const RunFileView& file, std::size_t index) {
     const std::string& name = file.checkpoints[index];
     Simulation sim(readState(file.path, checkpointGroup(name)));
     auto s = std::make_shared<Snapshot>();
-    s->step = sim.stepCount();
-    s->time = sim.time();
+    fillSnapshotScene(*s, sim);
     s->stage = stageOfCheckpoint(name);
-    const SimulationState& state = sim.stateRef();
-    s->shapes = state.shapes;
-    s->shape = state.grains.shape;
-    s->network = sim.contactNetwork();
-    s->x1 = s->network.x1;
-    s->x2 = s->network.x2;
-    s->theta = state.grains.theta;
-    s->rotation.assign(s->theta.size(), 0.0);
-    const MeasureSet measures = computeMeasures(s->network);
-    s->loadBearing = measures.loadBearing.grainInGraph;
-    for (const VoidCell& c : measures.voidCells.cells) {
-        VoidCellView v;
-        v.grains = c.grains;
-        v.area = c.area;
-        v.elongation = c.elongation;
-        v.direction = c.direction;
-        v.centroid1 = c.centroid1;
-        v.centroid2 = c.centroid2;
-        v.valence = c.valence;
-        for (std::size_t k = 0; k < c.vertices1.size(); ++k) {
-            v.x1.push_back(c.centroid1 + c.vertices1[k]);
-            v.x2.push_back(c.centroid2 + c.vertices2[k]);
-        }
-        s->voidCells.push_back(std::move(v));
-    }
     if (index < file.checkpointStrain.size() && !std::isnan(file.checkpointStrain[index])) {
         s->axialStrain = file.checkpointStrain[index];
         s->test = file.checkpointTest[index];

@@ -492,43 +492,11 @@ SnapshotPtr ExperimentRunner::snapshot() const {
     const Simulation& sim = *m.sim;
     auto snap = std::make_shared<Snapshot>();
     const RunProgress p = progress();
-    snap->step = sim.stepCount();
-    snap->time = sim.time();
     snap->stage = p.stage;
     snap->test = p.test;
     snap->axialStrain = p.axialStrain;
     snap->progress = p.fraction;
-    const SimulationState& s = sim.stateRef();
-    snap->shapes = s.shapes;
-    snap->shape = s.grains.shape;
-    snap->network = sim.contactNetwork();
-    snap->x1 = snap->network.x1;
-    snap->x2 = snap->network.x2;
-    snap->theta = s.grains.theta;
-    snap->rotation.resize(s.grains.size());
-    for (std::size_t i = 0; i < s.grains.size(); ++i) {
-        snap->rotation[i] =
-            s.grains.theta[i] - (i < m.thetaAtTestStart.size() ? m.thetaAtTestStart[i] : 0.0);
-    }
-    const MeasureSet measures = computeMeasures(snap->network);
-    snap->loadBearing = measures.loadBearing.grainInGraph;
-    for (const VoidCell& c : measures.voidCells.cells) {
-        VoidCellView v;
-        v.grains = c.grains;
-        v.area = c.area;
-        v.elongation = c.elongation;
-        v.direction = c.direction;
-        v.centroid1 = c.centroid1;
-        v.centroid2 = c.centroid2;
-        v.valence = c.valence;
-        v.x1.resize(c.vertices1.size());
-        v.x2.resize(c.vertices2.size());
-        for (std::size_t k = 0; k < c.vertices1.size(); ++k) {
-            v.x1[k] = c.centroid1 + c.vertices1[k];
-            v.x2[k] = c.centroid2 + c.vertices2[k];
-        }
-        snap->voidCells.push_back(std::move(v));
-    }
+    fillSnapshotScene(*snap, sim, m.thetaAtTestStart);
     snap->series = m.series;
     return snap;
 }

@@ -37,36 +37,9 @@ inline SnapshotPtr makeCompactedSnapshot(int grains = 150, std::int64_t steps = 
     }
 
     auto s = std::make_shared<Snapshot>();
-    s->step = sim.stepCount();
-    s->time = sim.time();
+    fillSnapshotScene(*s, sim, initial.grains.theta);
     s->stage = "compaction 100 kPa";
     s->test = "compaction";
-    const SimulationState& state = sim.stateRef();
-    s->shapes = state.shapes;
-    s->shape = state.grains.shape;
-    s->network = sim.contactNetwork();
-    s->x1 = s->network.x1;
-    s->x2 = s->network.x2;
-    s->theta = state.grains.theta;
-    for (std::size_t g = 0; g < s->theta.size(); ++g) {
-        s->rotation.push_back(state.grains.theta[g] - initial.grains.theta[g]);
-    }
-    const VoidCellSet cells = computeVoidCells(s->network);
-    for (const VoidCell& c : cells.cells) {
-        VoidCellView v;
-        v.grains = c.grains;
-        for (std::size_t k = 0; k < c.vertices1.size(); ++k) {
-            v.x1.push_back(c.centroid1 + c.vertices1[k]);
-            v.x2.push_back(c.centroid2 + c.vertices2[k]);
-        }
-        v.area = c.area;
-        v.elongation = c.elongation;
-        v.direction = c.direction;
-        v.centroid1 = c.centroid1;
-        v.centroid2 = c.centroid2;
-        v.valence = c.valence;
-        s->voidCells.push_back(std::move(v));
-    }
     return s;
 }
 

@@ -48,4 +48,13 @@ struct Snapshot {
 
 using SnapshotPtr = std::shared_ptr<const Snapshot>;
 
+class Simulation;
+
+/// Fills the scene of `snapshot` from the simulation's current configuration: shapes, grains
+/// (centres wrapped into the cell), the contact network, the load-bearing flags and the void
+/// cells (measures computed here). `thetaAtStart` gives each grain's orientation at the start
+/// of the test for `rotation` (empty: rotation 0). Called on the thread that owns `simulation`.
+void fillSnapshotScene(Snapshot& snapshot, const Simulation& simulation,
+                       const std::vector<double>& thetaAtStart = {});
+
 } // namespace grainlab
