@@ -11,6 +11,16 @@
 namespace grainlab {
 
 int runGui(int argc, char** argv, const std::string& experimentPath) {
+    // Without a display (and no platform chosen) Qt would abort; say what to do instead.
+    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
+        qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
+        fmt::print(stderr,
+                   "grainlab: no display found for the window. Run an experiment headless with\n"
+                   "  grainlab run {} --out DIR\n"
+                   "or set QT_QPA_PLATFORM=offscreen to drive the window without a screen.\n",
+                   experimentPath.empty() ? "EXPERIMENT.json" : experimentPath);
+        return 2;
+    }
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("GrainLab"));
     QApplication::setApplicationVersion(QStringLiteral(GRAINLAB_VERSION));

@@ -16,8 +16,16 @@ void ProgressBar::update(double fraction, const std::string& status) {
     fraction = std::clamp(fraction, 0.0, 1.0);
     const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - start_).count();
-    const double eta = fraction > 1e-6 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+    // A resumed run starts part-way: the rate is the progress made since this bar started.
+    if (startFraction_ < 0.0) {
+        startFraction_ = fraction;
+    }
+    const double done = fraction - startFraction_;
+    const double eta = done > 1e-6 ? elapsed * (1.0 - fraction) / done : -1.0;
     const auto clock = [](double s) {
+        if (s < 0.0) {
+            return std::string("-:--:--");
+        }
         const long t = static_cast<long>(s + 0.5);
         return fmt::format("{}:{:02}:{:02}", t / 3600, (t / 60) % 60, t % 60);
     };

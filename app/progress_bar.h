@@ -20,6 +20,7 @@ private:
     std::chrono::steady_clock::time_point lastDraw_{};
     bool terminal_ = false;
     int lastDecile_ = -1;
+    double startFraction_ = -1.0; ///< fraction at the first update (a resumed run starts late)
 };
 
 } // namespace grainlab
