@@ -162,5 +162,9 @@ private:
 
 /// Block size of every deterministic reduction (pairs or grains per block).
 inline constexpr int kReductionBlock = 512;
+/// Number of reduction blocks for `n` items.
+inline int reductionBlocks(std::size_t n) {
+    return static_cast<int>((n + kReductionBlock - 1) / kReductionBlock);
+}
 
 } // namespace grainlab
