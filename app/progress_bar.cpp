@@ -21,7 +21,8 @@ void ProgressBar::update(double fraction, const std::string& status) {
         startFraction_ = fraction;
     }
     const double done = fraction - startFraction_;
-    const double eta = done > 1e-6 ? elapsed * (1.0 - fraction) / done : -1.0;
+    const double eta =
+        fraction >= 1.0 ? 0.0 : (done > 1e-6 ? elapsed * (1.0 - fraction) / done : -1.0);
     const auto clock = [](double s) {
         if (s < 0.0) {
             return std::string("-:--:--");
