@@ -566,22 +566,6 @@ void Simulation::setFriction(double friction) {
     evaluateForces(false);
 }
 
-void Simulation::setDamping(const DampingParameters& damping) {
-    if (!(damping.coefficient >= 0.0)) {
-        throw std::invalid_argument(
-            fmt::format("damping coefficient {}: must be >= 0", damping.coefficient));
-    }
-    s_.parameters.damping = damping;
-    prepareIntegration();
-}
-
-void Simulation::setThreads(int threads) {
-    if (threads < 1) {
-        throw std::invalid_argument(fmt::format("threads = {}: must be >= 1", threads));
-    }
-    s_.parameters.threads = threads;
-}
-
 void Simulation::clearVelocities() {
     auto& g = s_.grains;
     std::fill(g.v1.begin(), g.v1.end(), 0.0);
@@ -596,14 +580,6 @@ SimulationState Simulation::state() const {
 std::size_t Simulation::contactCount() const {
     return static_cast<std::size_t>(
         std::count_if(normalForce_.begin(), normalForce_.end(), [](double f) { return f > 0.0; }));
-}
-
-double Simulation::maxOverlap() const {
-    double worst = 0.0;
-    for (std::size_t p = 0; p < normalForce_.size(); ++p) {
-        worst = std::max(worst, normalForce_[p] / s_.parameters.normalStiffness);
-    }
-    return worst;
 }
 
 ContactNetwork Simulation::contactNetwork() const {

@@ -73,8 +73,6 @@ public:
     /// mode or target changes.
     void setAxisControl(int axis, const AxisControl& control);
     void setFriction(double friction);
-    void setDamping(const DampingParameters& damping);
-    void setThreads(int threads);
     /// Zeroes all fluctuating velocities and spins (e.g. between stages).
     void clearVelocities();
 
@@ -90,19 +88,13 @@ public:
     double cellArea() const;
     /// Love-Weber stress of the current configuration (symmetric part, compression positive).
     Stress stress() const { return stress_; }
-    /// Affine stiffness estimates E_11, E_22 used by the servo [Pa].
-    std::array<double, 2> servoStiffness() const { return stiffness_; }
     /// Touching contacts and grain data for the measures (computed on demand).
     ContactNetwork contactNetwork() const;
     Energies energies() const;
-    std::size_t neighbourPairCount() const { return s_.pairs.size(); }
     std::size_t contactCount() const;
     std::int64_t neighbourRebuilds() const { return rebuilds_; }
-    /// Grain masses and moments of inertia [kg], [kg m^2].
+    /// Grain masses [kg].
     const std::vector<double>& grainMass() const { return mass_; }
-    const std::vector<double>& grainInertia() const { return inertia_; }
-    /// Maximal overlap over touching pairs [m].
-    double maxOverlap() const;
 
 private:
     void derive();
