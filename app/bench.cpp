@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -138,19 +137,6 @@ RunResult timeEngine(const SimulationState& dense, int threads, std::int64_t ste
         r.final = sim.state();
     }
     return r;
-}
-
-template <typename T>
-bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
-}
-
-bool sameState(const SimulationState& a, const SimulationState& b) {
-    return sameBits(a.grains.x1, b.grains.x1) && sameBits(a.grains.x2, b.grains.x2) &&
-           sameBits(a.grains.theta, b.grains.theta) && sameBits(a.grains.v1, b.grains.v1) &&
-           sameBits(a.grains.v2, b.grains.v2) && sameBits(a.grains.omega, b.grains.omega) &&
-           sameBits(a.pairs.tangentialForce, b.pairs.tangentialForce) &&
-           std::memcmp(a.cell.data(), b.cell.data(), sizeof(a.cell)) == 0;
 }
 
 struct LammpsResult {
@@ -527,7 +513,7 @@ int runBench(const BenchOptions& o) {
             s.bytesPerGrain = r.bytesPerGrain;
             if (firstFinal[a].grains.size() == 0) {
                 firstFinal[a] = std::move(r.final);
-            } else if (!sameState(firstFinal[a], r.final)) {
+            } else if (!identicalDynamics(firstFinal[a], r.final)) {
                 identical[a] = 0;
             }
         }

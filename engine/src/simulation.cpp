@@ -115,22 +115,6 @@ SimulationError::SimulationError(std::int64_t step_, std::int32_t grain_, std::s
                                      : fmt::format("step {}: {}", step_, cause_)),
       step(step_), grain(grain_), cause(std::move(cause_)) {}
 
-void GrainArrays::resize(std::size_t n) {
-    for (auto* v : {&x1, &x2, &theta, &v1, &v2, &omega}) {
-        v->resize(n, 0.0);
-    }
-    shape.resize(n, 0);
-}
-
-void PairArrays::resize(std::size_t n) {
-    first.resize(n);
-    second.resize(n);
-    shift1.resize(n);
-    shift2.resize(n);
-    tangentialForce.resize(n);
-    sliding.resize(n);
-}
-
 TimeStepLimit criticalTimeStep(const std::vector<OvalShape>& shapes,
                                const SimulationParameters& p) {
     // Central differences are stable for omega_max * dt < 2. The stiffest grain with z contacts

@@ -110,4 +110,9 @@ struct SimulationState {
     SimulationParameters parameters;
 };
 
+/// True when two states hold the same bits in everything that evolves: grains, neighbour pairs
+/// with their history, cell, velocity gradient, servo, step, time and energy totals. The
+/// determinism and restart checks (tests, `grainlab bench`) use it.
+bool identicalDynamics(const SimulationState& a, const SimulationState& b);
+
 } // namespace grainlab
