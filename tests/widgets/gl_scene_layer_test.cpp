@@ -93,16 +93,7 @@ TEST(GlSceneLayer, FrameTimeOfTheReferenceAssembly) {
     if (!SceneView::openGLAvailable()) {
         GTEST_SKIP() << "no OpenGL 3.3";
     }
-    AssemblySpec spec;
-    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 11);
-    const SimulationState state = generateGridAssembly(spec, SimulationParameters{});
-    auto s = std::make_shared<Snapshot>();
-    s->shapes = state.shapes;
-    s->shape = state.grains.shape;
-    s->x1 = state.grains.x1;
-    s->x2 = state.grains.x2;
-    s->theta = state.grains.theta;
-    s->network.cell = state.cell;
+    const SnapshotPtr s = testing::makeReferenceGridSnapshot();
     SceneView view;
     view.resize(1000, 1000);
     ASSERT_TRUE(view.setUseOpenGL(true));

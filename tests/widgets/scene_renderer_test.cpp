@@ -190,17 +190,7 @@ TEST(SceneRenderer, OverlaysAndImagesChangeThePicture) {
 TEST(SceneRenderer, FrameTimeOfTheReferenceAssembly) {
     // 8450 ovals of the reference study on their loose grid (no contacts): the QPainter frame
     // time of the whole cell at 1000 x 1000 pixels, and zoomed in (only visible grains drawn).
-    AssemblySpec spec;
-    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 11);
-    const SimulationState state = generateGridAssembly(spec, SimulationParameters{});
-    auto s = std::make_shared<Snapshot>();
-    s->shapes = state.shapes;
-    s->shape = state.grains.shape;
-    s->x1 = state.grains.x1;
-    s->x2 = state.grains.x2;
-    s->theta = state.grains.theta;
-    s->network.cell = state.cell;
-    s->network.grainCount = static_cast<std::int32_t>(s->x1.size());
+    const SnapshotPtr s = testing::makeReferenceGridSnapshot();
     SceneRenderer r;
     r.setSnapshot(s);
     const QSize size(1000, 1000);
