@@ -186,6 +186,13 @@ void Simulation::buildPairIndex() {
     for (auto* v : {&pairForce1_, &pairForce2_, &torqueFirst_, &torqueSecond_, &normalForce_}) {
         v->assign(pairCount, 0.0);
     }
+    pairReach_.resize(pairCount);
+    pairSmallerWidth_.resize(pairCount);
+    for (std::size_t p = 0; p < pairCount; ++p) {
+        const double a = halfWidth_[first[p]], b = halfWidth_[second[p]];
+        pairReach_[p] = a + b;
+        pairSmallerWidth_[p] = 2.0 * std::min(a, b);
+    }
     if (skinInUse_ <= 0.0) {
         const auto widths = cellWidths(s_.cell);
         skinInUse_ = std::min(skin_, 0.45 * (std::min(widths[0], widths[1]) - 4.0 * maxHalfWidth_));

@@ -18,17 +18,18 @@ namespace {
 
 
 /// Disk-disk geometry as diskContact computes it, without its branch (a coincident pair, which
-/// diskContact reports as not touching, is excluded by the caller's d^2 > 0 test).
-inline ContactGeometry diskGeometry(double radiusA, double radiusB, double dx, double dy) {
+/// diskContact reports as not touching, is excluded by the caller's d^2 > 0 test). `reach` is
+/// radiusA + radiusB.
+inline ContactGeometry diskGeometry(double radiusA, double reach, double dx, double dy) {
     ContactGeometry g;
     const double distance = std::sqrt(dx * dx + dy * dy);
     const double inv = 1.0 / std::max(distance, std::numeric_limits<double>::min());
-    g.overlap = radiusA + radiusB - distance;
+    g.overlap = reach - distance;
     g.normalX = dx * inv;
     g.normalY = dy * inv;
-    const double reach = radiusA - 0.5 * g.overlap;
-    g.pointX = reach * g.normalX;
-    g.pointY = reach * g.normalY;
+    const double towardPoint = radiusA - 0.5 * g.overlap;
+    g.pointX = towardPoint * g.normalX;
+    g.pointY = towardPoint * g.normalY;
     return g;
 }
 
@@ -220,7 +221,7 @@ void Simulation::derive() {
     const auto& p = s_.parameters;
     for (auto* v : {&mass_, &inertia_, &halfWidth_, &halfHeight_, &dampTrans_, &dampRot_,
                     &cosTheta_, &sinTheta_, &stepLimit_, &endOffset_, &sideOffset_, &endRadius_,
-                    &sideRadius_, &cosJunction_, &sinJunction_, &width_}) {
+                    &sideRadius_, &cosJunction_, &sinJunction_}) {
         v->resize(n);
     }
     allDisks_ = true;
@@ -248,7 +249,6 @@ void Simulation::derive() {
         sideRadius_[i] = arcs.sideRadius;
         cosJunction_[i] = arcs.cosJunction;
         sinJunction_[i] = arcs.sinJunction;
-        width_[i] = arcs.width;
         maxHalfWidth_ = std::max(maxHalfWidth_, s.halfWidth);
         minWidth = std::min(minWidth, s.width);
     }
@@ -280,7 +280,7 @@ void Simulation::evaluateForces(bool increment) {
 ContactGeometry Simulation::pairGeometry(std::size_t p, double l1, double l2) const {
     const std::int32_t i = s_.pairs.first[p], j = s_.pairs.second[p];
     if (allDisks_) {
-        return diskGeometry(halfWidth_[i], halfWidth_[j], l1, l2);
+        return diskGeometry(halfWidth_[i], pairReach_[p], l1, l2);
     }
     const OvalShape& A = s_.shapes[s_.grains.shape[i]];
     const OvalShape& B = s_.shapes[s_.grains.shape[j]];
@@ -325,7 +325,8 @@ void Simulation::pairForces() {
     const double* sideRadius = sideRadius_.data();
     const double* cosJ = cosJunction_.data();
     const double* sinJ = sinJunction_.data();
-    const double* width = width_.data();
+    const double* pairReach = pairReach_.data();
+    const double* pairSmallerWidth = pairSmallerWidth_.data();
     double* force1 = pairForce1_.data();
     double* force2 = pairForce2_.data();
     double* torqueA = torqueFirst_.data();
@@ -349,37 +350,46 @@ void Simulation::pairForces() {
         double excess = -std::numeric_limits<double>::infinity();
         double deferred = 0; // a double: GCC 12 vectorises no loop mixing int and double sums
         // Pairs the quadrant kernel hands to the 16-pair reference (ovals; rare).
-        std::uint8_t needsReference[kReductionBlock];
+        // Flags as doubles, copied to bytes after the loop: a byte store in the simd loop makes
+        // GCC 12 choose 32 lanes per iteration (the narrowest type sets the vectorisation
+        // factor), and the kernel then spills (1.3x slower for ovals).
+        double needsReference[kReductionBlock], slides[kReductionBlock];
 #pragma omp simd reduction(+ : s11, s12, s21, s22, e1, e2, slip, deferred) reduction(max : excess)
         for (std::size_t p = begin; p < end; ++p) {
             const std::int32_t i = first[p], j = second[p];
             const double k1 = shift1[p], k2 = shift2[p];
             const double l1 = x1[j] + h0 * k1 + h2 * k2 - x1[i];
             const double l2 = x2[j] + h1 * k1 + h3 * k2 - x2[i];
-            const double reach = halfWidth[i] + halfWidth[j];
+            const double reach = pairReach[p], smaller = pairSmallerWidth[p];
             const double d2 = l1 * l1 + l2 * l2, reach2 = reach * reach;
             const bool near = (d2 < reach2) & (d2 > 0.0);
             // No aggregate is copied in this loop: GCC 12 vectorises none that does.
             const QuadrantContact q = [&] {
                 if constexpr (Disk) {
-                    return QuadrantContact{diskGeometry(halfWidth[i], halfWidth[j], l1, l2), false};
+                    return QuadrantContact{diskGeometry(halfWidth[i], reach, l1, l2), false};
                 } else {
                     return ovalContactQuadrant(
                         endOffset[i], sideOffset[i], endRadius[i], sideRadius[i], cosJ[i], sinJ[i],
-                        width[i], cosT[i], sinT[i], endOffset[j], sideOffset[j], endRadius[j],
-                        sideRadius[j], cosJ[j], sinJ[j], width[j], cosT[j], sinT[j], l1, l2);
+                        cosT[i], sinT[i], endOffset[j], sideOffset[j], endRadius[j], sideRadius[j],
+                        cosJ[j], sinJ[j], cosT[j], sinT[j], l1, l2, smaller);
                 }
             }();
             const ContactGeometry& c = q.geometry;
             const bool reference = !Disk & near & (q.needsReference | fullOvalTest);
             const bool touching = near & !reference & (c.overlap > 0.0);
             const double old = stored[p];
+            // Loaded here, not by the kinematics lambda: loads through its captures would sit
+            // under the contact condition, as masked gathers GCC 12 does not vectorise.
+            const double v1A = v1[i], v2A = v2[i], omegaA = omega[i];
+            const double v1B = v1[j], v2B = v2[j], omegaB = omega[j];
             const PairResponse r = respond<Frictional, Increment>(
-                c, touching, l1, l2, old, kinematics(i, j), law, kt, inverseKt);
+                c, touching, l1, l2, old,
+                PairKinematics{v1A, v2A, omegaA, v1B, v2B, omegaB, L0, L1, L2, L3}, law, kt,
+                inverseKt);
             // A deferred pair keeps its history for the reference path below.
             stored[p] = reference ? old : r.tangential;
-            sliding[p] = r.sliding;
-            needsReference[p - begin] = reference;
+            slides[p - begin] = r.sliding ? 1.0 : 0.0;
+            needsReference[p - begin] = reference ? 1.0 : 0.0;
             deferred += reference ? 1.0 : 0.0;
             force1[p] = r.force1;
             force2[p] = r.force2;
@@ -393,14 +403,13 @@ void Simulation::pairForces() {
             e1 += r.e1;
             e2 += r.e2;
             slip += r.slipWork;
-            const double smaller = 2.0 * std::min(halfWidth[i], halfWidth[j]);
             const double over = c.overlap - overlapLimit * smaller;
             excess = std::max(excess, touching ? over : excess);
         }
         if constexpr (!Disk) {
             // The reference path, in pair order after the vector loop: fixed for any threads.
             for (std::size_t p = begin; deferred > 0 && p < end; ++p) {
-                if (!needsReference[p - begin]) {
+                if (needsReference[p - begin] == 0.0) {
                     continue;
                 }
                 deferred -= 1.0;
@@ -419,7 +428,7 @@ void Simulation::pairForces() {
                 const PairResponse r = respond<Frictional, Increment>(
                     c, touching, l1, l2, stored[p], kinematics(i, j), law, kt, inverseKt);
                 stored[p] = r.tangential;
-                sliding[p] = r.sliding;
+                slides[p - begin] = r.sliding ? 1.0 : 0.0;
                 force1[p] = r.force1;
                 force2[p] = r.force2;
                 torqueA[p] = r.torqueFirst;
@@ -433,10 +442,12 @@ void Simulation::pairForces() {
                 e2 += r.e2;
                 slip += r.slipWork;
                 if (touching) {
-                    excess = std::max(excess, c.overlap - overlapLimit * 2.0 *
-                                                              std::min(halfWidth[i], halfWidth[j]));
+                    excess = std::max(excess, c.overlap - overlapLimit * pairSmallerWidth[p]);
                 }
             }
+        }
+        for (std::size_t p = begin; p < end; ++p) {
+            sliding[p] = slides[p - begin] != 0.0;
         }
         double* out = &blockSums_[std::size_t(b) * kBlockSumWidth];
         out[0] = s11;

@@ -136,14 +136,15 @@ struct QuadrantContact {
 /// in a simd loop stops GCC 12). Always returns finite numbers; asks for the 16-pair reference
 /// when none of the 4 pairs is admissible, or past an overlap of 0.1 W (the quadrant choice
 /// equals the reference up to ~0.18 W, tested; past 0.1 W is a blow-up anyway).
-/// Per grain: arc offsets, radii and junction as in OvalArcs; (c, s) = cos, sin of orientation.
+/// Per grain: arc offsets, radii and junction as in OvalArcs; (c, s) = cos, sin of orientation;
+/// `smallerWidth` = min(W_A, W_B).
 inline QuadrantContact ovalContactQuadrant(double endOffsetA, double sideOffsetA, double endRadiusA,
                                            double sideRadiusA, double cosJunctionA,
-                                           double sinJunctionA, double widthA, double cA, double sA,
+                                           double sinJunctionA, double cA, double sA,
                                            double endOffsetB, double sideOffsetB, double endRadiusB,
                                            double sideRadiusB, double cosJunctionB,
-                                           double sinJunctionB, double widthB, double cB, double sB,
-                                           double dx, double dy) {
+                                           double sinJunctionB, double cB, double sB, double dx,
+                                           double dy, double smallerWidth) {
     // The other grain's direction in each body frame picks the facing end and side arcs.
     const double towardB1 = cA * dx + sA * dy, towardB2 = -sA * dx + cA * dy;
     const double towardA1 = -(cB * dx + sB * dy), towardA2 = -(-sB * dx + cB * dy);
@@ -159,25 +160,26 @@ inline QuadrantContact ovalContactQuadrant(double endOffsetA, double sideOffsetA
     const double sideB1 = dx + sB * sdB, sideB2 = dy + -(cB * sdB);
     const double tolerance = kArcDirectionTolerance;
 
-    double bestOverlap = 0, bestA1 = 0, bestA2 = 0, bestU1 = 0, bestU2 = 0, bestRadius = 0;
+    double bestOverlap = 0, bestA1 = 0, bestA2 = 0, bestW1 = 0, bestW2 = 0, bestDistance = 1;
+    double bestRadius = 0;
     bool found = false;
-    // One candidate pair: arc of A (centre a, radius rA, end or side) against arc of B.
+    // One candidate pair: arc of A (centre a, radius rA, end or side) against arc of B. The
+    // admissibility of the direction u = w / |w| is tested on w itself (u . e >= c  <=>
+    // w . e >= c |w|), so that only the chosen candidate is divided by its length.
     const auto consider = [&](double a1, double a2, double rA, bool endOfA, double b1, double b2,
                               double rB, bool endOfB, bool first) {
         const double w1 = b1 - a1, w2 = b2 - a2;
         const double distance = std::sqrt(w1 * w1 + w2 * w2);
-        const double inv = 1.0 / std::max(distance, std::numeric_limits<double>::min());
-        const double u1 = w1 * inv, u2 = w2 * inv;
-        // u in A's body frame must lie in A's arc range, -u in B's body frame in B's.
+        // w in A's body frame must lie in A's arc range, -w in B's body frame in B's.
         const double alongA =
-            endOfA ? endSignA * (cA * u1 + sA * u2) : sideSignA * (-sA * u1 + cA * u2);
-        const double limitA = endOfA ? cosJunctionA : sinJunctionA;
+            endOfA ? endSignA * (cA * w1 + sA * w2) : sideSignA * (-sA * w1 + cA * w2);
+        const double limitA = (endOfA ? cosJunctionA : sinJunctionA) - tolerance;
         const double alongB =
-            endOfB ? endSignB * -(cB * u1 + sB * u2) : sideSignB * -(-sB * u1 + cB * u2);
-        const double limitB = endOfB ? cosJunctionB : sinJunctionB;
+            endOfB ? endSignB * -(cB * w1 + sB * w2) : sideSignB * -(-sB * w1 + cB * w2);
+        const double limitB = (endOfB ? cosJunctionB : sinJunctionB) - tolerance;
         // & and |, not && and ||: no branches, so that the engine's loop vectorises.
-        const bool admissible =
-            (distance > 0.0) & (alongA >= limitA - tolerance) & (alongB >= limitB - tolerance);
+        const bool admissible = (distance > 0.0) & (alongA >= limitA * distance) &
+                                (alongB >= limitB * distance);
         const double overlap = rA + rB - distance;
         // Keep the admissible pair with the smallest overlap (the first on ties); before any
         // is admissible, keep the first pair so that every number stays finite.
@@ -185,8 +187,9 @@ inline QuadrantContact ovalContactQuadrant(double endOffsetA, double sideOffsetA
         bestOverlap = take ? overlap : bestOverlap;
         bestA1 = take ? a1 : bestA1;
         bestA2 = take ? a2 : bestA2;
-        bestU1 = take ? u1 : bestU1;
-        bestU2 = take ? u2 : bestU2;
+        bestW1 = take ? w1 : bestW1;
+        bestW2 = take ? w2 : bestW2;
+        bestDistance = take ? distance : bestDistance;
         bestRadius = take ? rA : bestRadius;
         found = found | admissible;
     };
@@ -194,8 +197,10 @@ inline QuadrantContact ovalContactQuadrant(double endOffsetA, double sideOffsetA
     consider(endA1, endA2, endRadiusA, true, sideB1, sideB2, sideRadiusB, false, false);
     consider(sideA1, sideA2, sideRadiusA, false, endB1, endB2, endRadiusB, true, false);
     consider(sideA1, sideA2, sideRadiusA, false, sideB1, sideB2, sideRadiusB, false, false);
+    const double inv = 1.0 / std::max(bestDistance, std::numeric_limits<double>::min());
+    const double bestU1 = bestW1 * inv, bestU2 = bestW2 * inv;
     QuadrantContact out;
-    const double tooDeep = 0.1 * std::min(widthA, widthB);
+    const double tooDeep = 0.1 * smallerWidth;
     out.needsReference = !found | (bestOverlap > tooDeep);
     out.geometry.overlap = bestOverlap;
     out.geometry.normalX = bestU1;
@@ -211,9 +216,9 @@ inline QuadrantContact ovalContactQuadrant(const OvalArcs& A, double cA, double 
                                            const OvalArcs& B, double cB, double sB, double dx,
                                            double dy) {
     return ovalContactQuadrant(A.endOffset, A.sideOffset, A.endRadius, A.sideRadius, A.cosJunction,
-                               A.sinJunction, A.width, cA, sA, B.endOffset, B.sideOffset,
-                               B.endRadius, B.sideRadius, B.cosJunction, B.sinJunction, B.width, cB,
-                               sB, dx, dy);
+                               A.sinJunction, cA, sA, B.endOffset, B.sideOffset, B.endRadius,
+                               B.sideRadius, B.cosJunction, B.sinJunction, cB, sB, dx, dy,
+                               std::min(A.width, B.width));
 }
 
 /// Oval-oval contact, fast form: the quadrant kernel (4 arc pairs), and the 16-pair reference

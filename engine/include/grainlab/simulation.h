@@ -128,13 +128,15 @@ private:
     std::vector<double> stepLimit_;              ///< largest travel in one step [m]
     // Oval arcs per grain (copies of the shape's OvalArcs), read by the vectorised pair loop.
     std::vector<double> endOffset_, sideOffset_, endRadius_, sideRadius_; ///< [m]
-    std::vector<double> cosJunction_, sinJunction_, width_;
+    std::vector<double> cosJunction_, sinJunction_;
     // Integration coefficients per grain (prepareIntegration()): v <- keep v + push F, and the
     // damping power factor, for translation and rotation.
     std::vector<double> keepTrans_, pushTrans_, keepRot_,
         pushRot_;                             ///< [-], [s/kg], [-], [s/kg m^2]
     std::vector<double> workTrans_, workRot_; ///< dt beta c [J s^2/m^2], [J s^2]
     // Derived per pair (written by the pair loop, read by the gather in integrate()).
+    // Constant per pair (buildPairIndex()): a_i + a_j, and min(W_i, W_j) [m].
+    std::vector<double> pairReach_, pairSmallerWidth_;
     std::vector<double> pairForce1_, pairForce2_, torqueFirst_, torqueSecond_, normalForce_;
     // Pairs are sorted by first grain: grain i is first in [firstStart_[i], firstStart_[i+1]);
     // it is second in the pairs secondPairs_[secondStart_[i] .. secondStart_[i+1]).
