@@ -1,7 +1,6 @@
 // Tests of the micro-structure measures (SPEC §4): closed forms on hand-built contact networks,
 // and the unbalanced-force index on a packing compacted by the engine.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -13,6 +12,7 @@
 #include "grainlab/assembly.h"
 #include "grainlab/measures.h"
 #include "grainlab/simulation.h"
+#include "networks.h"
 
 namespace grainlab {
 namespace {
@@ -21,16 +21,7 @@ constexpr double kPi = std::numbers::pi;
 
 /// An empty network of n grains of area `area` in a rectangular cell L1 x L2.
 ContactNetwork emptyNetwork(int n, double L1, double L2, double area = 1e-6) {
-    ContactNetwork net;
-    net.grainCount = n;
-    net.cell = {L1, 0.0, 0.0, L2};
-    net.x1.assign(n, 0.0);
-    net.x2.assign(n, 0.0);
-    net.grainArea.assign(n, area);
-    net.grainMass.assign(n, 1.0);
-    net.netForce1.assign(n, 0.0);
-    net.netForce2.assign(n, 0.0);
-    return net;
+    return test::emptyNetwork(n, {L1, 0.0, 0.0, L2}, area);
 }
 
 /// A contact between grains a and b (image shift 0) with a normal at `angle` and given forces;
@@ -348,47 +339,9 @@ TEST(Measures, SeriesRowPutsEachValueUnderItsColumn) {
     EXPECT_EQ(seriesRow(m, in).at(24), 0.0);
 }
 
-/// Hexagonal lattice of nx * ny touching disks of diameter d (ny even), contacts by adjacency.
-ContactNetwork hexagonalNetwork(int nx, int ny, double d) {
-    const double rowHeight = d * std::sqrt(3.0) / 2.0;
-    ContactNetwork net = emptyNetwork(nx * ny, nx * d, ny * rowHeight, kPi * d * d / 4);
-    const auto& h = net.cell;
-    auto id = [&](int i, int j) { return ((j + ny) % ny) * nx + (i + nx) % nx; };
-    for (int j = 0; j < ny; ++j) {
-        for (int i = 0; i < nx; ++i) {
-            net.x1[id(i, j)] = (i + 0.5 * (j % 2) + 0.25) * d;
-            net.x2[id(i, j)] = (j + 0.5) * rowHeight;
-        }
-    }
-    for (int j = 0; j < ny; ++j) {
-        for (int i = 0; i < nx; ++i) {
-            // Right, upper-right and upper-left neighbours.
-            const int up = j % 2;
-            const int neighbours[3][2] = {{i + 1, j}, {i + up, j + 1}, {i + up - 1, j + 1}};
-            for (const auto& nb : neighbours) {
-                ContactRecord r;
-                r.first = id(i, j);
-                r.second = id(nb[0], nb[1]);
-                r.shift1 = nb[0] >= nx ? 1 : (nb[0] < 0 ? -1 : 0);
-                r.shift2 = nb[1] >= ny ? 1 : 0;
-                r.branch1 = net.x1[r.second] + h[0] * r.shift1 + h[2] * r.shift2 - net.x1[r.first];
-                r.branch2 = net.x2[r.second] + h[1] * r.shift1 + h[3] * r.shift2 - net.x2[r.first];
-                const double length = std::hypot(r.branch1, r.branch2);
-                r.normal1 = r.branch1 / length;
-                r.normal2 = r.branch2 / length;
-                r.point1 = 0.5 * r.branch1;
-                r.point2 = 0.5 * r.branch2;
-                r.normalForce = 1.0;
-                net.contacts.push_back(r);
-            }
-        }
-    }
-    return net;
-}
-
 TEST(Measures, HexagonalLatticeClosedForms) {
     const double d = 1e-3;
-    const ContactNetwork net = hexagonalNetwork(8, 6, d);
+    const ContactNetwork net = test::hexagonalNetwork(8, 6, d);
     const MeasureSet m = computeMeasures(net);
     EXPECT_EQ(m.counts.contacts, 3 * 48);
     EXPECT_NEAR(m.counts.coordination, 6.0, 1e-15);
@@ -405,22 +358,19 @@ TEST(Measures, HexagonalLatticeClosedForms) {
     EXPECT_EQ(m.strongWeak.weak.contacts, 144);
 }
 
-TEST(Measures, AllMeasuresOf8450GrainsAreFast) {
-    // The reference experiment's size: 130 x 65 hexagonal lattice, 25350 contacts.
-    ContactNetwork net = hexagonalNetwork(65, 130, 1e-3);
+TEST(Measures, AllMeasuresAtTheReferenceSize) {
+    // The reference experiment's size: 130 x 65 hexagonal lattice, 25350 contacts. (How long
+    // this takes is reported by `grainlab bench`, not tested.)
+    ContactNetwork net = test::hexagonalNetwork(65, 130, 1e-3);
     std::mt19937_64 random(3);
     std::uniform_real_distribution<double> uniform(0.5, 1.5);
     for (ContactRecord& r : net.contacts) {
         r.normalForce = uniform(random);
     }
-    const auto start = std::chrono::steady_clock::now();
     const MeasureSet m = computeMeasures(net);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(m.voidCells.voidCount, 2 * 8450);
     EXPECT_TRUE(m.voidCells.cellular) << m.voidCells.problem;
-    EXPECT_LT(seconds, 0.1);
-    RecordProperty("seconds", std::to_string(seconds));
+    EXPECT_NEAR(m.counts.coordination, 6.0, 1e-12);
 }
 
 TEST(MeasuresPacking, UnbalancedForceSmallAtEquilibriumLargeWhenPerturbed) {
