@@ -22,6 +22,11 @@
 #include "grainlab/simulation.h"
 #include "progress_bar.h"
 
+#if defined(GRAINLAB_WITH_GUI) && __has_include("gui_bench.h")
+#define GRAINLAB_HAVE_GUI_BENCH 1
+#include "gui_bench.h"
+#endif
+
 namespace grainlab {
 namespace {
 
@@ -419,6 +424,14 @@ void addBenchOptions(CLI::App& command, BenchOptions& o) {
     command.add_option("--lammps", o.lammpsExecutable, "LAMMPS executable")->capture_default_str();
     command.add_flag("--scaling", o.scaling,
                      "cost per grain-step at 1k, 8k, 32k and 128k grains (tiled assemblies)");
+    command.add_flag("--gui", o.gui,
+                     "the live window instead: engine steps/s headless and in the window "
+                     "(--gui-steps of --experiment's first shear, --rounds), and the scene's "
+                     "frame time with --grains ovals (QPainter, and OpenGL where available)");
+    command.add_option("--gui-steps", o.guiSteps, "--gui: timed steps per run")
+        ->capture_default_str();
+    command.add_option("--experiment", o.experiment, "--gui: experiment whose first test is run")
+        ->capture_default_str();
 }
 
 int runBench(const BenchOptions& o) {
@@ -438,11 +451,20 @@ int runBench(const BenchOptions& o) {
                    o.assembly);
         return 2;
     }
-    if (o.rounds < 1 || o.steps < 1) {
-        fmt::print(stderr, "bench: --rounds and --steps must be >= 1\n");
+    if (o.rounds < 1 || o.steps < 1 || o.guiSteps < 1) {
+        fmt::print(stderr, "bench: --rounds, --steps and --gui-steps must be >= 1\n");
         return 2;
     }
     const std::vector<int> threadCounts = parseThreads(o.threads);
+    if (o.gui) {
+#ifdef GRAINLAB_HAVE_GUI_BENCH
+        return runGuiBench(o);
+#else
+        fmt::print(stderr, "bench: --gui: this grainlab was built without the window "
+                           "(GRAINLAB_BUILD_GUI=OFF)\n");
+        return 2;
+#endif
+    }
     if (o.scaling) {
         return runScaling(o, shapes, threadCounts);
     }

@@ -3,7 +3,8 @@
 // (axis 1 strain-controlled at an engineering rate of 0.2 /s, axis 2 held at 100 kPa, mu = 0.5)
 // and prints grain-steps per second; optionally runs stock LAMMPS on the same disk assembly in
 // the same invocation (interleaved rounds), and the cost per grain-step from 1k to 128k grains.
-// Progress goes to stderr, the tables to stdout. Runs on the main thread.
+// Progress goes to stderr, the tables to stdout. Runs on the main thread. With --gui (GUI builds):
+// what the live window costs the engine and the scene's frame time instead (gui_bench.h).
 
 #include <cstdint>
 #include <string>
@@ -30,6 +31,12 @@ struct BenchOptions {
     std::string lammpsDirectory = std::string(GRAINLAB_SOURCE_DIR) + "/resources/bench/lammps";
     std::string lammpsExecutable = "lmp";
     bool scaling = false; ///< cost per grain-step at 1k, 8k, 32k, 128k grains instead
+    /// The live window instead (gui_bench.h): engine speed headless and in the window for
+    /// `guiSteps` steps of `experiment`'s first shear (threads: the first count of `threads`),
+    /// and the scene's frame time with `grains` ovals.
+    bool gui = false;
+    std::int64_t guiSteps = 100000;
+    std::string experiment = std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json";
 };
 
 /// Declares the bench options on the `bench` subcommand.

@@ -110,7 +110,9 @@ bool SimulationController::ensureRun() {
         setState(RunState::Failed, "no experiment loaded");
         return false;
     }
+    history_.clear();
     run_ = factory();
+    run_->keepRecordSnapshots(&history_);
     lastRateTime_ = wallSeconds();
     lastRateSteps_ = 0;
     lastRateStrain_ = run_->progress().axialStrain;

@@ -5,7 +5,9 @@
 // at most every publish interval (default ~16 ms; the main window uses 33 ms) and never more
 // often than 1/20 of the time it takes to build one, so that snapshots cost the engine about 5 %
 // of its time, by swapping a mutex-guarded shared pointer; the GUI picks the newest one on
-// its own timer and never waits for the worker.
+// its own timer and never waits for the worker. It also keeps the run's history (a snapshot at
+// each shear record, within a memory budget: gui_snapshot_history.h), cleared when a new run
+// starts, for the GUI to show a past moment.
 //
 // Threads: every public function is called from the GUI thread; latestSnapshot() and status()
 // may be called from any thread. stateChanged is emitted from the worker thread (queued to
@@ -23,6 +25,7 @@
 #include <QThread>
 
 #include "gui_run.h"
+#include "gui_snapshot_history.h"
 
 namespace grainlab::ui {
 
@@ -61,6 +64,8 @@ public:
 
     SnapshotPtr latestSnapshot() const;
     RunStatus status() const;
+    /// The snapshots kept at the shear records of the current (or last) run. Thread-safe.
+    const SnapshotHistory& history() const { return history_; }
     /// Minimum time between publications [s] (default 1/60 s).
     void setPublishInterval(double seconds);
 
@@ -89,6 +94,9 @@ private:
     SnapshotPtr latest_;
     RunStatus status_;
     double publishInterval_ = 1.0 / 60.0;
+
+    // Filled by the run on the worker thread, read by the GUI; locks itself.
+    SnapshotHistory history_;
 
     // Worker thread only.
     std::unique_ptr<SteppedRun> run_;

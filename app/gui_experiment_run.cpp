@@ -1,24 +1,106 @@
-// See gui_run.h: the ExperimentRunner adapter.
+// See gui_run.h: the ExperimentRunner adapter. It is also the runner's RunOutput, only to hear
+// of each record (nothing is written): at the shear records the history wants, it builds a
+// snapshot of the scene and keeps it there.
 #include "gui_run.h"
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "gui_snapshot_history.h"
 
 namespace grainlab::ui {
 namespace {
 
-class ExperimentRun final : public SteppedRun {
+/// The kept snapshots may cost the engine at most about this share of its time (the published
+/// ones about 5 %): measured over at least kCostSamples kept snapshots, a larger share thins
+/// the history (every other record from then on) and the count starts again.
+constexpr double kHistoryShare = 0.02;
+constexpr int kCostSamples = 8;
+
+double wallSeconds() {
+    using namespace std::chrono;
+    return duration<double>(steady_clock::now().time_since_epoch()).count();
+}
+
+class ExperimentRun final : public SteppedRun, private RunOutput {
 public:
-    explicit ExperimentRun(const ExperimentConfig& config) : runner_(config) {}
+    explicit ExperimentRun(const ExperimentConfig& config) : runner_(config, this) {}
+    ExperimentRun(const ExperimentConfig& config, ResumePoint resume)
+        : runner_(config, std::move(resume), this) {}
     bool advance(std::int64_t maxSteps) override { return runner_.advance(maxSteps); }
     SnapshotPtr snapshot() const override { return runner_.snapshot(); }
     RunProgress progress() const override { return runner_.progress(); }
+    void keepRecordSnapshots(SnapshotHistory* history) override { history_ = history; }
 
 private:
+    void record(const SeriesTable& series) override {
+        if (!history_ || series.stages.empty() || series.stages.back().rfind("shear", 0) != 0) {
+            return;
+        }
+        const std::int64_t record = shearRecords_++;
+        if (!history_->wants(record)) {
+            return;
+        }
+        const double start = wallSeconds();
+        history_->add(record, recordSnapshot());
+        const double end = wallSeconds();
+        if (costSamples_ == 0) {
+            costSince_ = start;
+            costSeconds_ = 0.0;
+        }
+        costSeconds_ += end - start;
+        if (++costSamples_ > kCostSamples && costSeconds_ > kHistoryShare * (end - costSince_)) {
+            history_->thin();
+            costSamples_ = 0;
+        }
+    }
+    void checkpoint(const std::string&, const SimulationState&, const std::string&) override {}
+    void sample(double, const SimulationState&) override {}
+
+    /// The scene now (grains, contacts, measures), without the series: the charts draw those
+    /// from the live snapshot, and a copy in every kept snapshot would dominate the memory.
+    SnapshotPtr recordSnapshot() {
+        const RunProgress p = runner_.progress();
+        if (p.test != thetaTest_) {
+            // The runner keeps the orientations at the start of the test to itself; its own
+            // snapshot's rotation is theta - theta0, so theta0 = theta - rotation. Once per test.
+            const SnapshotPtr full = runner_.snapshot();
+            thetaAtTestStart_.resize(full->theta.size());
+            for (std::size_t i = 0; i < full->theta.size(); ++i) {
+                thetaAtTestStart_[i] = full->theta[i] - full->rotation[i];
+            }
+            thetaTest_ = p.test;
+        }
+        auto s = std::make_shared<Snapshot>();
+        s->stage = p.stage;
+        s->test = p.test;
+        s->axialStrain = p.axialStrain;
+        s->progress = p.fraction;
+        fillSnapshotScene(*s, runner_.simulation(), thetaAtTestStart_);
+        return s;
+    }
+
     ExperimentRunner runner_;
+    SnapshotHistory* history_ = nullptr;
+    std::int64_t shearRecords_ = 0; ///< shear records seen, the history's record numbers
+    // What the kept snapshots cost since costSince_ (wall clock) [s].
+    int costSamples_ = 0;
+    double costSince_ = 0;
+    double costSeconds_ = 0;
+    std::string thetaTest_;                ///< the test thetaAtTestStart_ belongs to
+    std::vector<double> thetaAtTestStart_; ///< [rad]
 };
 
 } // namespace
 
 std::unique_ptr<SteppedRun> makeExperimentRun(const ExperimentConfig& config) {
     return std::make_unique<ExperimentRun>(config);
+}
+
+std::unique_ptr<SteppedRun> makeResumedExperimentRun(const ExperimentConfig& config,
+                                                     ResumePoint resume) {
+    return std::make_unique<ExperimentRun>(config, std::move(resume));
 }
 
 } // namespace grainlab::ui

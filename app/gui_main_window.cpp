@@ -80,9 +80,13 @@ MainWindow::MainWindow(RunMaker maker, QWidget* parent)
       error_(new QLabel), progress_(new QProgressBar), scrubBar_(new QWidget),
       scrub_(new QSlider(Qt::Horizontal)), scrubLabel_(new QLabel) {
     setWindowTitle(QStringLiteral("GrainLab"));
-    // OpenGL draws the grains where the platform has it; the offscreen platform (tests, CI) and
-    // GRAINLAB_NO_OPENGL=1 keep the QPainter view, which draws the same picture.
-    if (qEnvironmentVariableIsEmpty("GRAINLAB_NO_OPENGL")) {
+    // OpenGL draws the grains where the platform has a graphics card; the offscreen platform
+    // (tests, CI) and GRAINLAB_NO_OPENGL=1 keep the QPainter view, which draws the same picture.
+    // So does OpenGL drawn by the processor (Mesa's llvmpipe, e.g. under Xvfb): it takes more
+    // processor time from the engine than QPainter and shows fewer pictures (measured with
+    // `grainlab bench --gui`); GRAINLAB_OPENGL=1 uses it anyway.
+    if (qEnvironmentVariableIsEmpty("GRAINLAB_NO_OPENGL") &&
+        (!SceneView::openGLIsSoftware() || !qEnvironmentVariableIsEmpty("GRAINLAB_OPENGL"))) {
         scene_->setUseOpenGL(true);
     }
     buildActions();
@@ -143,17 +147,8 @@ MainWindow::MainWindow(RunMaker maker, QWidget* parent)
         cursor_->setText(
             tr("x1 %1 mm, x2 %2 mm").arg(x1 * 1e3, 0, 'f', 2).arg(x2 * 1e3, 0, 'f', 2));
     });
-    connect(charts_, &ChartsPanel::hoveredAxialStrain, this, [this](double eps1) {
-        cursor_->setText(tr("chart: ε1 = %1 %").arg(100.0 * eps1, 0, 'f', 3));
-        // With a run file shown, the scene follows the chart cursor to the nearest checkpoint
-        // of the test on screen.
-        if (runFile_ && viewingFile_ && scene_->snapshot()) {
-            const int k = nearestCheckpoint(*runFile_, scene_->snapshot()->test, eps1);
-            if (k >= 0) {
-                scrub_->setValue(k);
-            }
-        }
-    });
+    connect(charts_, &ChartsPanel::hoveredAxialStrain, this, &MainWindow::chartHovered);
+    connect(charts_, &ChartsPanel::hoverEnded, this, &MainWindow::chartHoverEnded);
     connect(parameters_, &ParametersPanel::edited, this,
             [this](bool) { updateControls(controller_->status().state); });
     connect(controller_.get(), &SimulationController::stateChanged, this,
@@ -362,13 +357,15 @@ void MainWindow::refresh() {
     const SnapshotPtr latest = controller_->latestSnapshot();
     const auto nowMs = QDateTime::currentMSecsSinceEpoch();
     if (latest && latest != shown_ && !viewingFile_) {
-        if (shown_ && shown_->step != latest->step) {
-            // Indices of grains and void cells refer to the snapshot they were picked in.
-            scene_->selectGrain(-1);
-            scene_->selectVoidCell(-1);
+        if (!viewingHistory_) {
+            if (shown_ && shown_->step != latest->step) {
+                // Indices of grains and void cells refer to the snapshot they were picked in.
+                scene_->selectGrain(-1);
+                scene_->selectVoidCell(-1);
+            }
+            scene_->setSnapshot(latest);
         }
         shown_ = latest;
-        scene_->setSnapshot(latest);
         std::size_t rows = 0;
         for (const auto& table : latest->series) {
             rows += table.rows.size();
@@ -421,6 +418,48 @@ void MainWindow::updateCharts(const SnapshotPtr& live) {
     charts_->setSeries(tables);
 }
 
+void MainWindow::chartHovered(double eps1) {
+    cursor_->setText(tr("chart: ε1 = %1 %").arg(100.0 * eps1, 0, 'f', 3));
+    if (runFile_ && viewingFile_) {
+        // With a run file shown, the slider follows the chart cursor to the nearest checkpoint
+        // of the test on screen (and stays there).
+        if (scene_->snapshot()) {
+            const int k = nearestCheckpoint(*runFile_, scene_->snapshot()->test, eps1);
+            if (k >= 0) {
+                scrub_->setValue(k);
+            }
+        }
+        return;
+    }
+    // The live run: its kept snapshot of the test on screen nearest the hovered eps1.
+    const SnapshotPtr kept =
+        controller_->history().nearest(shown_ ? shown_->test : std::string(), eps1);
+    if (!kept) {
+        return;
+    }
+    if (kept != scene_->snapshot()) {
+        viewingHistory_ = true;
+        scene_->selectGrain(-1);
+        scene_->selectVoidCell(-1);
+        scene_->setSnapshot(kept);
+    }
+    cursor_->setText(tr("chart: ε1 = %1 % · scene: step %2, ε1 = %3 % (kept snapshot)")
+                         .arg(100.0 * eps1, 0, 'f', 3)
+                         .arg(kept->step)
+                         .arg(100.0 * kept->axialStrain, 0, 'f', 3));
+}
+
+void MainWindow::chartHoverEnded() {
+    if (!viewingHistory_) {
+        return;
+    }
+    viewingHistory_ = false;
+    scene_->selectGrain(-1);
+    scene_->selectVoidCell(-1);
+    scene_->setSnapshot(shown_);
+    cursor_->clear();
+}
+
 bool MainWindow::openRunFile(const QString& path, QString* error) {
     try {
         runFile_ = ui::openRunFile(path.toStdString());
@@ -452,6 +491,7 @@ void MainWindow::showRunFileCheckpoint(int index) {
     try {
         const SnapshotPtr snapshot = runFileSnapshot(*runFile_, static_cast<std::size_t>(index));
         viewingFile_ = true;
+        viewingHistory_ = false;
         scene_->selectGrain(-1);
         scene_->selectVoidCell(-1);
         scene_->setSnapshot(snapshot);

@@ -2,7 +2,9 @@
 // The main window: assembles the panels — the live scene with its display options, the charts,
 // the inspector, the run controls and the editable parameters — and wires them to the simulation
 // controller. It computes nothing itself: a 33 ms timer picks the controller's newest snapshot
-// and hands it to the panels (charts at most every 150 ms while running). GUI thread only.
+// and hands it to the panels (charts at most every 150 ms while running). Hovering a chart shows
+// that moment in the scene: a run file's nearest checkpoint, or the live run's nearest kept
+// snapshot (the controller's history) until the hover ends. GUI thread only.
 
 #include <functional>
 #include <memory>
@@ -51,6 +53,8 @@ public:
     bool openRunFile(const QString& path, QString* error = nullptr);
     /// Shows checkpoint `index` of the open run file in the scene.
     void showRunFileCheckpoint(int index);
+    /// True while the scene shows a kept snapshot of the live run (a chart is hovered).
+    bool showsLiveHistory() const { return viewingHistory_; }
 
     /// Takes the newest snapshot and status from the controller now (what the timer does).
     void refresh();
@@ -93,6 +97,9 @@ private:
     void openRunFileDialog();
     /// The live run's tables followed by the open run file's.
     void updateCharts(const SnapshotPtr& live);
+    /// The scene follows a chart hover at `eps1`; chartHoverEnded() returns it to the live run.
+    void chartHovered(double eps1);
+    void chartHoverEnded();
 
     RunMaker maker_;
     ExperimentConfig experiment_;
@@ -102,7 +109,8 @@ private:
     std::size_t chartedRows_ = 0;
     RunState shownState_ = RunState::Idle;
     std::optional<RunFileView> runFile_;
-    bool viewingFile_ = false; ///< the scene shows a run file's checkpoint, not the live run
+    bool viewingFile_ = false;    ///< the scene shows a run file's checkpoint, not the live run
+    bool viewingHistory_ = false; ///< the scene shows a kept snapshot of the live run (hover)
     QTimer timer_;
 
     SceneView* scene_;

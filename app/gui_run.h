@@ -12,6 +12,8 @@
 
 namespace grainlab::ui {
 
+class SnapshotHistory;
+
 class SteppedRun {
 public:
     virtual ~SteppedRun() = default;
@@ -19,10 +21,18 @@ public:
     virtual bool advance(std::int64_t maxSteps) = 0;
     virtual SnapshotPtr snapshot() const = 0;
     virtual RunProgress progress() const = 0;
+    /// From now on, adds a snapshot of the run at each of its shear records to `history` (the
+    /// ones the history wants; see gui_snapshot_history.h), during advance(). The history
+    /// outlives the run. By default a run keeps none.
+    virtual void keepRecordSnapshots(SnapshotHistory* history) { (void)history; }
 };
 
 /// The experiment runner behind the SteppedRun interface (no output files: the GUI exports on
 /// demand).
 std::unique_ptr<SteppedRun> makeExperimentRun(const ExperimentConfig& config);
+/// The same, continuing from a checkpoint of the experiment (e.g. one taken in memory by a
+/// benchmark, so that every timed run starts from the same state).
+std::unique_ptr<SteppedRun> makeResumedExperimentRun(const ExperimentConfig& config,
+                                                     ResumePoint resume);
 
 } // namespace grainlab::ui

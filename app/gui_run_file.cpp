@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 #include "grainlab/measures.h"
@@ -28,6 +29,21 @@ std::string stageOfCheckpoint(const std::string& name) {
     }
     std::replace(stage.begin(), stage.end(), '-', ' ');
     return stage;
+}
+
+/// The test a stage belongs to, as far as rotation goes: "compaction" for every compaction
+/// stage, the pressure ("15 kPa") for a test's equilibration and shear; "" for anything else
+/// (e.g. an "interrupted" checkpoint, which belongs to the test before it).
+std::string testOfStage(const std::string& stage) {
+    if (stage.rfind("compaction", 0) == 0) {
+        return "compaction";
+    }
+    for (const char* prefix : {"equilibration ", "shear "}) {
+        if (stage.rfind(prefix, 0) == 0) {
+            return stage.substr(std::string(prefix).size());
+        }
+    }
+    return {};
 }
 
 } // namespace
@@ -66,6 +82,24 @@ RunFileView openRunFile(const std::string& path) {
         view.checkpointTest.push_back(test);
         view.checkpointStrain.push_back(strain);
     }
+    // Rotation counts from the first checkpoint of each test: the runner writes one as a test
+    // starts (the sample it equilibrates), holding exactly the orientations its live snapshots
+    // count rotation from.
+    std::map<std::string, int> first; // test of the stage -> index into thetaAtTestStart
+    std::string current;
+    for (std::size_t k = 0; k < view.checkpoints.size(); ++k) {
+        const std::string test = testOfStage(view.checkpointStage[k]);
+        if (!test.empty()) {
+            current = test;
+        }
+        auto it = first.find(current);
+        if (it == first.end()) {
+            const SimulationState state = readState(path, checkpointGroup(view.checkpoints[k]));
+            view.thetaAtTestStart.push_back(state.grains.theta);
+            it = first.emplace(current, static_cast<int>(view.thetaAtTestStart.size()) - 1).first;
+        }
+        view.checkpointTestStart.push_back(it->second);
+    }
     return view;
 }
 
@@ -76,7 +110,12 @@ SnapshotPtr runFileSnapshot(const RunFileView& file, std::size_t index) {
     const std::string& name = file.checkpoints[index];
     Simulation sim(readState(file.path, checkpointGroup(name)));
     auto s = std::make_shared<Snapshot>();
-    fillSnapshotScene(*s, sim);
+    static const std::vector<double> none;
+    const std::vector<double>& thetaAtStart =
+        index < file.checkpointTestStart.size()
+            ? file.thetaAtTestStart[file.checkpointTestStart[index]]
+            : none;
+    fillSnapshotScene(*s, sim, thetaAtStart);
     s->stage = stageOfCheckpoint(name);
     if (index < file.checkpointStrain.size() && !std::isnan(file.checkpointStrain[index])) {
         s->axialStrain = file.checkpointStrain[index];

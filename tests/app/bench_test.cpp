@@ -1,12 +1,21 @@
 // The LAMMPS data reader of `grainlab bench` (app/bench.h): the disk benchmark assembly must be
-// the one LAMMPS runs: same grains, sizes, masses, box and contacts.
+// the one LAMMPS runs: same grains, sizes, masses, box and contacts. And `grainlab bench --gui`
+// runs to the end and prints its figures (what it measures is not checked here: speed figures
+// belong in the benchmark's output, not in tests).
+#include <sys/wait.h>
+
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <numbers>
+#include <sstream>
 #include <string>
+#include <utility>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "bench.h"
 #include "grainlab/simulation.h"
@@ -75,6 +84,73 @@ TEST(LammpsData, UnreadableOrWrongFilesAreNamed) {
     }
     std::remove(path.c_str());
 }
+
+/// Runs `command` through the shell; its exit code and standard output.
+std::pair<int, std::string> runCapturing(const std::string& command) {
+    FILE* pipe = popen(command.c_str(), "r");
+    if (pipe == nullptr) {
+        return {-1, {}};
+    }
+    std::string out;
+    char buffer[4096];
+    std::size_t n = 0;
+    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) {
+        out.append(buffer, n);
+    }
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+/// `grainlab bench --gui` on a tiny experiment (120 grains), 400 steps, one round, a scene of
+/// 150 ovals, with `prefix` before the command (the platform).
+std::pair<int, std::string> runTinyGuiBench(const std::string& prefix) {
+    std::ifstream quick(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json");
+    std::stringstream text;
+    text << quick.rdbuf();
+    nlohmann::json j = nlohmann::json::parse(text.str());
+    j["name"] = "tiny";
+    j["grains"]["count"] = 120;
+    const std::string path = testing::TempDir() + "grainlab_gui_bench_tiny.json";
+    std::ofstream(path) << j.dump(2);
+    return runCapturing(fmt::format("{} {} bench --gui --gui-steps 400 --rounds 1 --grains 150 "
+                                    "--experiment {} 2>/dev/null",
+                                    prefix, GRAINLAB_EXE, path));
+}
+
+TEST(GuiBench, RunsOffscreenAndPrintsEveryFigure) {
+    const auto [code, out] = runTinyGuiBench("QT_QPA_PLATFORM=offscreen");
+#ifdef GRAINLAB_WITH_GUI
+    ASSERT_EQ(code, 0) << out;
+    for (const char* expected :
+         {"platform offscreen", "(a) engine speed, headless and in the live window", "\"tiny\"",
+          "120 grains", "400 steps per run", "round 1: headless", "engine steps/s headless:",
+          "live window: scene drawn with QPainter:", "slowdown", "kept for chart hover",
+          "(b) scene frame time: 150 ovals", "QPainter renderer (raster image): whole cell",
+          "OpenGL view: skipped: the offscreen platform has no OpenGL"}) {
+        EXPECT_NE(out.find(expected), std::string::npos) << expected << " in\n" << out;
+    }
+#else
+    EXPECT_EQ(code, 2) << out; // built without the window: refused with a message
+#endif
+}
+
+#ifdef GRAINLAB_WITH_GUI
+TEST(GuiBench, RunsTheOpenGLViewUnderAVirtualXServer) {
+    if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0) {
+        GTEST_SKIP() << "xvfb-run is not installed";
+    }
+    const auto [code, out] = runTinyGuiBench("xvfb-run -a");
+    ASSERT_EQ(code, 0) << out;
+    EXPECT_NE(out.find("platform xcb"), std::string::npos) << out;
+    // Xvfb's OpenGL is Mesa's software rasteriser: the window keeps QPainter, and the bench
+    // measures the window with OpenGL forced as well.
+    EXPECT_NE(out.find("live window: scene drawn with QPainter:"), std::string::npos) << out;
+    EXPECT_NE(out.find("window with software OpenGL: scene drawn with OpenGL:"), std::string::npos)
+        << out;
+    EXPECT_NE(out.find("OpenGL view ("), std::string::npos) << out;
+    EXPECT_NE(out.find("each including the read-back"), std::string::npos) << out;
+}
+#endif
 
 } // namespace
 } // namespace grainlab

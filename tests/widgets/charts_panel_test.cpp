@@ -1,6 +1,8 @@
 // The charts panel plots the SPEC §4 columns of every test in its own colour, in display units,
 // replaces curves when rows are added, drops tests that are gone, and reports the eps1 under the
-// cursor.
+// cursor and when the hover ends.
+#include <cmath>
+
 #include <QMouseEvent>
 #include <QSignalSpy>
 #include <QTest>
@@ -93,6 +95,14 @@ TEST(ChartsPanel, HoverReportsAxialStrainAndMarksEveryStrainChart) {
     ASSERT_GE(spy.count(), 1);
     EXPECT_NEAR(spy.back().front().toDouble(), 0.05, 0.002);
     EXPECT_NEAR(panel.chartView(1)->marker(), 5.0, 0.2);
+
+    // The cursor leaves the chart: the hover ends and every mark goes.
+    QSignalSpy ended(&panel, &ChartsPanel::hoverEnded);
+    QEvent leave(QEvent::Leave);
+    QApplication::sendEvent(view, &leave);
+    EXPECT_EQ(ended.count(), 1);
+    EXPECT_TRUE(std::isnan(view->marker()));
+    EXPECT_TRUE(std::isnan(panel.chartView(1)->marker()));
 }
 
 } // namespace

@@ -1,10 +1,8 @@
 // The OpenGL layer draws the same grains as the QPainter renderer: grain colour at every grain
 // centre, the cell fill far from every grain. Runs where OpenGL 3.3 exists (e.g. under
-// `xvfb-run`); skipped on the offscreen platform, which has none. Also prints the frame time of
-// the reference assembly's 8450 ovals.
-#include <chrono>
+// `xvfb-run`); skipped on the offscreen platform, which has none. Its frame time is measured
+// by `grainlab bench --gui` (app/gui_bench.h), not here.
 #include <cmath>
-#include <cstdio>
 
 #include <QDir>
 #include <QTest>
@@ -26,7 +24,9 @@ bool near(QRgb a, const QColor& b, int tolerance = 3) {
 
 /// Under the virtual X server of the test suite OpenGL must be there: a skip would hide a
 /// broken GL view (tests/CMakeLists.txt sets GRAINLAB_REQUIRE_OPENGL there).
-bool openGLRequired() { return qEnvironmentVariableIsSet("GRAINLAB_REQUIRE_OPENGL"); }
+bool openGLRequired() {
+    return qEnvironmentVariableIsSet("GRAINLAB_REQUIRE_OPENGL");
+}
 
 TEST(GlSceneLayer, DrawsGrainsWhereTheSnapshotHasThem) {
     ASSERT_TRUE(SceneView::openGLAvailable() || !openGLRequired()) << "no OpenGL under xvfb";
@@ -86,37 +86,6 @@ TEST(GlSceneLayer, DrawsGrainsWhereTheSnapshotHasThem) {
     }
     EXPECT_GT(empty, 10);
     EXPECT_GT(agree, 0.97 * total);
-}
-
-TEST(GlSceneLayer, FrameTimeOfTheReferenceAssembly) {
-    ASSERT_TRUE(SceneView::openGLAvailable() || !openGLRequired()) << "no OpenGL under xvfb";
-    if (!SceneView::openGLAvailable()) {
-        GTEST_SKIP() << "no OpenGL 3.3";
-    }
-    const SnapshotPtr s = testing::makeReferenceGridSnapshot();
-    SceneView view;
-    view.resize(1000, 1000);
-    ASSERT_TRUE(view.setUseOpenGL(true));
-    view.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
-    view.setSnapshot(s);
-    view.glLayer()->grabFramebuffer();
-    const auto t0 = std::chrono::steady_clock::now();
-    const int frames = 10;
-    for (int k = 0; k < frames; ++k) {
-        view.glLayer()->grabFramebuffer();
-    }
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() /
-        frames;
-    std::printf("[ frame time ] OpenGL layer (%s), 8450 ovals, 1000 x 1000: %.1f ms per frame "
-                "including read-back\n",
-                reinterpret_cast<const char*>(
-                    QOpenGLContext::currentContext()
-                        ? QOpenGLContext::currentContext()->functions()->glGetString(GL_RENDERER)
-                        : reinterpret_cast<const GLubyte*>("unknown")),
-                ms);
-    EXPECT_LT(ms, 1000.0);
 }
 
 } // namespace

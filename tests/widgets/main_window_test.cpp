@@ -11,6 +11,7 @@
 #include <QImageReader>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMouseEvent>
 #include <QProgressBar>
 #include <QSlider>
 #include <QSpinBox>
@@ -22,6 +23,7 @@
 #include "grainlab/experiment_file.h"
 #include "grainlab/run_file.h"
 #include "grainlab/ui/charts_panel.h"
+#include "grainlab/ui/colour_maps.h"
 #include "grainlab/ui/inspector_panel.h"
 #include "grainlab/ui/parameters_panel.h"
 #include "grainlab/ui/scene_view.h"
@@ -222,19 +224,107 @@ TEST(MainWindow, RunsToTheEndAndWritesScreenshots) {
         0, images.filePath(QStringLiteral("chart-q-over-p.png")), QSize(900, 600)));
 }
 
-TEST(MainWindow, OpensARunFileAndScrubsItsCheckpoints) {
-    // A run file written headless by the engine, as `grainlab run` does.
-    const QString path = QDir::current().filePath(QStringLiteral("test-images/small-run.h5"));
-    QDir().mkpath(QStringLiteral("test-images"));
+TEST(MainWindow, HoveringAChartShowsTheLiveRunsKeptSnapshotUntilTheHoverEnds) {
     ExperimentConfig config = smallExperiment();
-    config.record.snapshotStepInterval = 10000;
-    config.record.snapshotStrainInterval = 0.001;
-    {
-        RunFile file(path.toStdString(), config.sourceText);
-        ExperimentRunner runner(config, &file);
-        while (runner.advance(5000)) {
+    config.shear.targetAxialStrain = 0.02; // long enough to pause during the shear
+    MainWindow w;
+    w.setExperiment(config);
+    w.resize(1400, 900);
+    w.show();
+    click(w, w.startAction());
+    // Some records into the shear (one every 0.02 %): the history keeps a snapshot of each one,
+    // or of every n-th when they cost the engine too much.
+    ASSERT_TRUE(waitFor([&] {
+        const RunStatus status = w.controller().status();
+        return status.progress.axialStrain >= 0.005 || status.state == RunState::Finished ||
+               status.state == RunState::Failed;
+    }));
+    click(w, w.pauseAction());
+    ASSERT_TRUE(waitFor([&] { return w.controller().status().state != RunState::Running; }));
+    ASSERT_GE(w.controller().history().size(), 6u);
+    w.refresh();
+    const SnapshotPtr live = w.sceneView()->snapshot();
+    ASSERT_EQ(live, w.controller().latestSnapshot());
+    const SeriesTable& series = live->series.back();
+    ASSERT_EQ(series.test, live->test);
+
+    // An early kept record (the history numbers the shear records from 0; it may keep only
+    // every n-th) and the point of the q/p chart drawn from it.
+    const std::vector<std::int64_t> kept = w.controller().history().records();
+    const std::int64_t record = kept[kept.size() / 4];
+    std::vector<std::size_t> shearRows;
+    for (std::size_t r = 0; r < series.rows.size(); ++r) {
+        if (series.stages[r].rfind("shear", 0) == 0) {
+            shearRows.push_back(r);
         }
     }
+    ASSERT_LT(static_cast<std::size_t>(record), shearRows.size());
+    const std::vector<double>& row = series.rows[shearRows[record]];
+    const auto recordStep = static_cast<std::int64_t>(row[series.column("step")]);
+    const double recordStrain = row[series.column("eps1")];
+    ASSERT_GT(recordStep, 0);
+    ASSERT_LT(recordStep, live->step);
+    const QPointF point(100.0 * recordStrain, row[series.column("q_over_p")]);
+    EXPECT_TRUE(w.chartsPanel()->curvePoints(0, live->test, "q_over_p").contains(point));
+
+    // The cursor over that point of the chart (a synthetic move, as in charts_panel_test).
+    HoverChartView* chart = w.chartsPanel()->chartView(0);
+    const QPointF local = chart->mapFromScene(chart->chart()->mapToPosition(point));
+    QMouseEvent move(QEvent::MouseMove, local, chart->viewport()->mapToGlobal(local), Qt::NoButton,
+                     Qt::NoButton, Qt::NoModifier);
+    QApplication::sendEvent(chart->viewport(), &move);
+    EXPECT_TRUE(w.showsLiveHistory());
+    const SnapshotPtr earlier = w.sceneView()->snapshot();
+    ASSERT_NE(earlier, live);
+    EXPECT_EQ(earlier->step, recordStep);
+    EXPECT_EQ(earlier->axialStrain, recordStrain);
+    EXPECT_EQ(earlier->test, live->test);
+    // Its rotation counts from the same start of the test as the live snapshot's.
+    ASSERT_EQ(earlier->rotation.size(), live->rotation.size());
+    for (std::size_t g = 0; g < earlier->rotation.size(); ++g) {
+        ASSERT_NEAR(earlier->theta[g] - earlier->rotation[g], live->theta[g] - live->rotation[g],
+                    1e-12);
+    }
+    // What is drawn is the earlier scene: it differs from the live one, and the timer does not
+    // replace it while the hover lasts.
+    const QImage earlierImage = w.sceneView()->grab().toImage();
+    QTest::qWait(100);
+    EXPECT_EQ(w.sceneView()->snapshot(), earlier);
+
+    // The cursor leaves the chart: back to the live run.
+    QEvent leave(QEvent::Leave);
+    QApplication::sendEvent(chart, &leave);
+    EXPECT_FALSE(w.showsLiveHistory());
+    EXPECT_EQ(w.sceneView()->snapshot(), live);
+    const QImage now = w.sceneView()->grab().toImage();
+    ASSERT_EQ(earlierImage.size(), now.size());
+    int differing = 0;
+    for (int y = 0; y < now.height(); ++y) {
+        for (int x = 0; x < now.width(); ++x) {
+            differing += earlierImage.pixel(x, y) != now.pixel(x, y);
+        }
+    }
+    EXPECT_GT(differing, 1000);
+}
+
+/// A run file of the small experiment written headless by the engine, as `grainlab run` does,
+/// into test-images/`name`, with checkpoints every 0.1 % of shear (to `shearTarget`).
+QString writeSmallRunFile(const QString& name, double shearTarget = 0.005) {
+    const QString path = QDir::current().filePath(QStringLiteral("test-images/") + name);
+    QDir().mkpath(QStringLiteral("test-images"));
+    ExperimentConfig config = smallExperiment();
+    config.shear.targetAxialStrain = shearTarget;
+    config.record.snapshotStepInterval = 10000;
+    config.record.snapshotStrainInterval = 0.001;
+    RunFile file(path.toStdString(), config.sourceText);
+    ExperimentRunner runner(config, &file);
+    while (runner.advance(5000)) {
+    }
+    return path;
+}
+
+TEST(MainWindow, OpensARunFileAndScrubsItsCheckpoints) {
+    const QString path = writeSmallRunFile(QStringLiteral("small-run.h5"));
     Fixture f;
     MainWindow& w = f.window;
     QString error;
@@ -270,6 +360,65 @@ TEST(MainWindow, OpensARunFileAndScrubsItsCheckpoints) {
     EXPECT_EQ(f.shown()->test, test);
     EXPECT_FALSE(w.openRunFile(QStringLiteral("/nonexistent.h5"), &error));
     EXPECT_FALSE(error.isEmpty());
+}
+
+TEST(MainWindow, RunFileCheckpointsColourTheRotationSinceTheirTestStarted) {
+    const QString path = writeSmallRunFile(QStringLiteral("rotation-run.h5"), 0.02);
+    Fixture f;
+    MainWindow& w = f.window;
+    QString error;
+    ASSERT_TRUE(w.openRunFile(path, &error)) << error.toStdString();
+    const auto checkpoints = listCheckpoints(path.toStdString());
+    int testStart = -1;
+    for (std::size_t k = 0; k < checkpoints.size() && testStart < 0; ++k) {
+        if (checkpoints[k].find("equilibration") != std::string::npos) {
+            testStart = static_cast<int>(k);
+        }
+    }
+    ASSERT_GE(testStart, 0);
+    const SimulationState start =
+        readState(path.toStdString(), checkpointGroup(checkpoints[testStart]));
+
+    // The last checkpoint (the end of the shear): rotation = theta - theta at the test's first
+    // checkpoint, where the live run counts it from too.
+    const SnapshotPtr last = f.shown();
+    ASSERT_EQ(last->rotation.size(), start.grains.theta.size());
+    double largest = 0.0;
+    for (std::size_t g = 0; g < last->rotation.size(); ++g) {
+        ASSERT_EQ(last->rotation[g], last->theta[g] - start.grains.theta[g]) << "grain " << g;
+        largest = std::max(largest, std::fabs(last->rotation[g]));
+    }
+    EXPECT_GT(largest, 0.05);
+
+    // Drawn: coloured by rotation, the grains that turned are not the colour of no rotation.
+    w.findChildren<QComboBox*>().at(0)->setCurrentIndex(1); // rotation
+    const QImage image = w.sceneView()->grab().toImage();
+    const SceneRenderer& r = w.sceneView()->renderer();
+    int turned = 0, drawn = 0;
+    for (std::size_t g = 0; g < last->rotation.size(); ++g) {
+        if (std::fabs(last->rotation[g]) < 0.05) {
+            continue;
+        }
+        ++turned;
+        const QRgb pixel = image.pixel(w.sceneView()->toWidget(last->x1[g], last->x2[g]));
+        const QColor expected = r.grainColour(static_cast<int>(g));
+        const QColor none = divergingColour(0.0);
+        const bool coloured = std::abs(expected.red() - none.red()) +
+                                  std::abs(expected.green() - none.green()) +
+                                  std::abs(expected.blue() - none.blue()) >
+                              30;
+        drawn += coloured && std::abs(qRed(pixel) - expected.red()) <= 3 &&
+                 std::abs(qGreen(pixel) - expected.green()) <= 3 &&
+                 std::abs(qBlue(pixel) - expected.blue()) <= 3;
+    }
+    EXPECT_GE(turned, 10);
+    EXPECT_GE(drawn, turned * 8 / 10) << drawn << " of " << turned;
+
+    // At the test's first checkpoint nothing has turned yet.
+    w.runFileSlider()->setValue(testStart);
+    for (double rotation : f.shown()->rotation) {
+        ASSERT_EQ(rotation, 0.0);
+    }
 }
 
 } // namespace

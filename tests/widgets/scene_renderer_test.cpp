@@ -1,9 +1,7 @@
 // The scene renderer draws what the snapshot says: grain colour at every grain centre, the cell
 // fill wherever no grain (or image) can reach, background outside the cell; hit tests find the
 // grain and void cell under a pixel; overlays change the picture.
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 
 #include <QDir>
 #include <QImage>
@@ -185,35 +183,6 @@ TEST(SceneRenderer, OverlaysAndImagesChangeThePicture) {
     r.options().contactRose = true;
     r.options().scaleBar = true;
     EXPECT_GT(differingPixels(render(r, size)), 300);
-}
-
-TEST(SceneRenderer, FrameTimeOfTheReferenceAssembly) {
-    // 8450 ovals of the reference study on their loose grid (no contacts): the QPainter frame
-    // time of the whole cell at 1000 x 1000 pixels, and zoomed in (only visible grains drawn).
-    const SnapshotPtr s = testing::makeReferenceGridSnapshot();
-    SceneRenderer r;
-    r.setSnapshot(s);
-    const QSize size(1000, 1000);
-    r.fitToCell(size);
-    QImage image(size, QImage::Format_ARGB32_Premultiplied);
-    auto frameMs = [&] {
-        QPainter painter(&image);
-        const auto t0 = std::chrono::steady_clock::now();
-        const int frames = 5;
-        for (int k = 0; k < frames; ++k) {
-            r.render(painter, size);
-        }
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                   .count() /
-               frames;
-    };
-    const double whole = frameMs();
-    r.view().zoomAt(QPointF(500, 500), 8.0);
-    const double zoomed = frameMs();
-    std::printf("[ frame time ] 8450 ovals: whole cell %.1f ms, zoomed x8 %.1f ms\n", whole,
-                zoomed);
-    EXPECT_LT(zoomed, whole);
-    EXPECT_LT(whole, 500.0);
 }
 
 } // namespace

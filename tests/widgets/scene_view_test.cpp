@@ -1,6 +1,7 @@
 // The scene view driven with QTest: a click at a void cell's centroid selects it and the
 // inspector shows its valence and area; a click at a grain centre selects the grain; the wheel
 // zooms about the cursor and keys pan; the widget paints what the renderer paints.
+#include <QGuiApplication>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -114,6 +115,20 @@ TEST(SceneView, WidgetPaintsTheScene) {
     const QPoint p = w.view.toWidget(s.x1[0], s.x2[0]);
     EXPECT_EQ(QColor(grabbed.pixel(p)).rgb(), QColor(rendered.pixel(p)).rgb());
     EXPECT_EQ(QColor(grabbed.pixel(p)).rgb(), w.view.renderer().grainColour(0).rgb());
+}
+
+TEST(SceneView, TellsASoftwareOpenGLRendererFromAGraphicsCard) {
+    if (!SceneView::openGLAvailable()) {
+        EXPECT_TRUE(SceneView::openGLRenderer().isEmpty());
+        EXPECT_FALSE(SceneView::openGLIsSoftware());
+        GTEST_SKIP() << "no OpenGL on platform " << QGuiApplication::platformName().toStdString();
+    }
+    const QString renderer = SceneView::openGLRenderer();
+    EXPECT_FALSE(renderer.isEmpty());
+    // The suite's virtual X server (tests/CMakeLists.txt) has Mesa's software rasteriser.
+    if (qEnvironmentVariableIsSet("GRAINLAB_REQUIRE_OPENGL")) {
+        EXPECT_TRUE(SceneView::openGLIsSoftware()) << renderer.toStdString();
+    }
 }
 
 } // namespace

@@ -43,23 +43,6 @@ inline SnapshotPtr makeCompactedSnapshot(int grains = 150, std::int64_t steps = 
     return s;
 }
 
-/// The 8450 ovals of the reference study on their loose grid (no contacts): a scene for frame
-/// times of the full assembly.
-inline SnapshotPtr makeReferenceGridSnapshot() {
-    AssemblySpec spec;
-    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 11);
-    const SimulationState state = generateGridAssembly(spec, SimulationParameters{});
-    auto s = std::make_shared<Snapshot>();
-    s->shapes = state.shapes;
-    s->shape = state.grains.shape;
-    s->x1 = state.grains.x1;
-    s->x2 = state.grains.x2;
-    s->theta = state.grains.theta;
-    s->network.cell = state.cell;
-    s->network.grainCount = static_cast<std::int32_t>(s->x1.size());
-    return s;
-}
-
 /// A synthetic shear series (columns of SPEC §4 that the charts use) for test `name`.
 inline SeriesTable makeSeries(const std::string& name, int rows, double peak) {
     SeriesTable t;

@@ -93,12 +93,16 @@ void HoverChartView::mouseMoveEvent(QMouseEvent* event) {
         emit hovered(x);
     } else if (!std::isnan(marker_)) {
         setMarker(std::numeric_limits<double>::quiet_NaN());
+        emit hoverEnded();
     }
     QChartView::mouseMoveEvent(event);
 }
 
 void HoverChartView::leaveEvent(QEvent* event) {
-    setMarker(std::numeric_limits<double>::quiet_NaN());
+    if (!std::isnan(marker_)) {
+        setMarker(std::numeric_limits<double>::quiet_NaN());
+        emit hoverEnded();
+    }
     QChartView::leaveEvent(event);
 }
 
@@ -187,6 +191,12 @@ ChartsPanel::ChartsPanel(QWidget* parent, std::vector<ChartDefinition> charts)
                         emit hoveredAxialStrain(v / xScale);
                     }
                 });
+        connect(view, &HoverChartView::hoverEnded, this, [this] {
+            for (auto* other : views_) {
+                other->setMarker(std::numeric_limits<double>::quiet_NaN());
+            }
+            emit hoverEnded();
+        });
         view->setProperty("eps1", againstAxialStrain);
         views_.push_back(view);
         grid->addWidget(view, static_cast<int>(k) / 2, static_cast<int>(k) % 2);

@@ -6,7 +6,9 @@
 #include <QGuiApplication>
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QOffscreenSurface>
 #include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QPainter>
 #include <QWheelEvent>
 
@@ -99,6 +101,37 @@ bool SceneView::openGLAvailable() {
     QOpenGLContext context;
     context.setFormat(format);
     return context.create() && context.format().version() >= qMakePair(3, 3);
+}
+
+QString SceneView::openGLRenderer() {
+    static const QString renderer = [] {
+        if (!openGLAvailable()) {
+            return QString();
+        }
+        QOpenGLContext context;
+        QOffscreenSurface surface;
+        surface.setFormat(context.format());
+        surface.create();
+        if (!context.create() || !context.makeCurrent(&surface)) {
+            return QString();
+        }
+        const auto* name = context.functions()->glGetString(GL_RENDERER);
+        const QString text =
+            name ? QString::fromLatin1(reinterpret_cast<const char*>(name)) : QString();
+        context.doneCurrent();
+        return text;
+    }();
+    return renderer;
+}
+
+bool SceneView::openGLIsSoftware() {
+    const QString renderer = openGLRenderer();
+    for (const char* software : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer"}) {
+        if (renderer.contains(QLatin1String(software), Qt::CaseInsensitive)) {
+            return true;
+        }
+    }
+    return false;
 }
 
 bool SceneView::setUseOpenGL(bool use) {

@@ -3,7 +3,8 @@
 // strain, fabric anisotropy H11 - H22 of all / strong / weak contacts, coordination Z, Z_eff and
 // sliding index S, void-cell count N_v/N_vi, and Z_eff against N_v/N_vi. Several tests overlay
 // in one chart, one colour per test, one line style per quantity. Column names are the CSV
-// contract of SPEC §4. Hovering a chart marks the point under the cursor and reports its eps1.
+// contract of SPEC §4. Hovering a chart marks the point under the cursor and reports its eps1,
+// and reports when the hover ends (the cursor leaves the plot area).
 // GUI thread only; series are replaced wholesale (QXYSeries::replace), never appended point by
 // point.
 
@@ -54,6 +55,8 @@ public:
 signals:
     /// The data x under the cursor (display units).
     void hovered(double x);
+    /// The cursor left the plot area (or the chart): the mark is gone.
+    void hoverEnded();
 
 protected:
     void mouseMoveEvent(QMouseEvent* event) override;
@@ -91,6 +94,8 @@ public:
 signals:
     /// Axial strain eps1 [-] under the cursor in a chart drawn against eps1.
     void hoveredAxialStrain(double eps1);
+    /// The cursor left the chart it was hovering (every chart's mark is cleared).
+    void hoverEnded();
 
 protected:
     void resizeEvent(QResizeEvent* event) override;

@@ -40,6 +40,12 @@ public:
     /// True when this platform can draw the scene with OpenGL 3.3 (never on the offscreen,
     /// minimal, vnc or linuxfb platforms, which have no OpenGL).
     static bool openGLAvailable();
+    /// The OpenGL renderer (GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"), "" when
+    /// OpenGL is not available. Asked once.
+    static QString openGLRenderer();
+    /// True when OpenGL is drawn by the processor (Mesa's llvmpipe, softpipe or swrast, e.g.
+    /// under Xvfb or in a virtual machine without a graphics card).
+    static bool openGLIsSoftware();
     /// Draws the grains with the OpenGL layer (instanced, shader-drawn ovals) instead of
     /// QPainter. Returns whether OpenGL is now in use (false when unavailable).
     bool setUseOpenGL(bool use);
