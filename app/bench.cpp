@@ -112,6 +112,7 @@ std::size_t heapInUse() {
 struct RunResult {
     double grainStepsPerSecond = 0;
     double contactsPerGrain = 0; ///< 2 * contacts / grains (LAMMPS's Z)
+    double pairsPerGrain = 0;    ///< neighbour-list pairs / grains (each pair counted once)
     std::int64_t rebuilds = 0;
     double bytesPerGrain = 0; ///< engine state, heap bytes per grain
     SimulationState final;    ///< for the 1-thread vs 2-thread comparison
@@ -137,6 +138,7 @@ RunResult timeEngine(const SimulationState& dense, int threads, std::int64_t ste
     r.bytesPerGrain = double(heapInUse() - heapBefore) / n;
     r.grainStepsPerSecond = n * double(steps) / seconds;
     r.contactsPerGrain = 2.0 * double(sim.contactCount()) / n;
+    r.pairsPerGrain = double(sim.stateRef().pairs.size()) / n;
     r.rebuilds = sim.neighbourRebuilds();
     if (keepState) {
         r.final = sim.state();
@@ -223,6 +225,7 @@ struct Series {
     int threads = 1;
     std::size_t grains = 0;
     std::vector<double> rate, contacts;
+    double pairsPerGrain = 0;
     std::int64_t rebuilds = 0;
     double bytesPerGrain = 0;
 };
@@ -532,6 +535,7 @@ int runBench(const BenchOptions& o) {
             s.rate.push_back(r.grainStepsPerSecond);
             s.contacts.push_back(r.contactsPerGrain);
             s.rebuilds = r.rebuilds;
+            s.pairsPerGrain = r.pairsPerGrain;
             s.bytesPerGrain = r.bytesPerGrain;
             if (firstFinal[a].grains.size() == 0) {
                 firstFinal[a] = std::move(r.final);
@@ -541,17 +545,18 @@ int runBench(const BenchOptions& o) {
         }
     }
 
-    fmt::print("{:<9} {:<5} {:>6} {:>7} {:>7} {:>14} {:>11} {:>11} {:>9} {:>8} {:>8}\n", "engine",
-               "shape", "grains", "threads", "steps", "grain-steps/s", "min", "max", "contacts/g",
-               "rebuilds", "B/grain");
+    fmt::print("{:<9} {:<5} {:>6} {:>7} {:>7} {:>14} {:>11} {:>11} {:>9} {:>8} {:>8} {:>8}\n",
+               "engine", "shape", "grains", "threads", "steps", "grain-steps/s", "min", "max",
+               "contacts/g", "pairs/g", "rebuilds", "B/grain");
     for (const Series& s : series) {
         const auto [lo, hi] = std::minmax_element(s.rate.begin(), s.rate.end());
+        const bool lammps = s.name == "LAMMPS";
         fmt::print("{:<9} {:<5} {:>6} {:>7} {:>7} {:>14.4g} {:>11.4g} {:>11.4g} {:>9.3f} {:>8} "
-                   "{:>8.0f}\n",
+                   "{:>8} {:>8.0f}\n",
                    s.name, s.shape, s.grains, s.threads, o.steps, median(s.rate), *lo, *hi,
                    median(s.contacts),
-                   s.name == "LAMMPS" ? std::string("-") : std::to_string(s.rebuilds),
-                   s.bytesPerGrain);
+                   lammps ? std::string("-") : fmt::format("{:.3f}", s.pairsPerGrain),
+                   lammps ? std::string("-") : std::to_string(s.rebuilds), s.bytesPerGrain);
     }
     fmt::print("\nratios (median over rounds of the per-round ratio; {} round(s), {} steps):\n",
                o.rounds, o.steps);
@@ -584,8 +589,11 @@ int runBench(const BenchOptions& o) {
         const Series* disk = find("GrainLab", "disk", threads);
         const Series* oval = find("GrainLab", "oval", threads);
         if (disk != nullptr && oval != nullptr) {
-            fmt::print("  oval cost / disk cost per grain-step, {} thread(s): {:.2f}\n", threads,
-                       medianRatio(*disk, *oval));
+            const double perGrainStep = medianRatio(*disk, *oval);
+            fmt::print("  oval cost / disk cost per grain-step, {} thread(s): {:.2f} (per "
+                       "neighbour pair: {:.2f})\n",
+                       threads, perGrainStep,
+                       perGrainStep * disk->pairsPerGrain / oval->pairsPerGrain);
         }
     }
     if (threadCounts.size() > 1) {
