@@ -13,6 +13,7 @@
 #include "grainlab/measures.h"
 #include "grainlab/simulation.h"
 #include "networks.h"
+#include "scenes.h"
 
 namespace grainlab {
 namespace {
@@ -375,19 +376,7 @@ TEST(Measures, AllMeasuresAtTheReferenceSize) {
 
 TEST(MeasuresPacking, UnbalancedForceSmallAtEquilibriumLargeWhenPerturbed) {
     // A dense, frictionless oval packing compacted by the engine to 100 kPa.
-    AssemblySpec spec;
-    spec.grainCount = 300;
-    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 5);
-    spec.aspectRatio = 0.6;
-    spec.seed = 11;
-    SimulationParameters parameters;
-    parameters.friction = 0;
-    parameters.servo.maxStrainRate = 20;
-    Simulation simulation(generateGridAssembly(spec, parameters));
-    for (int axis = 0; axis < 2; ++axis) {
-        simulation.setAxisControl(axis, AxisControl{AxisMode::Stress, 0, 1e5});
-    }
-    simulation.advance(60000);
+    Simulation simulation = test::compactedPacking(300, 0.6, 11, 60000);
     // Settle until the unbalanced force is small, within a bounded number of steps.
     for (int k = 0; k < 40 && computeMeasures(simulation.contactNetwork()).unbalancedForce >= 0.5;
          ++k) {

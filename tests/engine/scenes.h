@@ -64,6 +64,24 @@ inline Simulation compacted(SimulationState state, double pressure, std::int64_t
     return sim;
 }
 
+/// Compacts `count` grains of aspect ratio `aspect` isotropically to 100 kPa, frictionless.
+inline Simulation compactedPacking(int count, double aspect, std::uint64_t seed, std::int64_t steps) {
+    AssemblySpec spec;
+    spec.grainCount = count;
+    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 5);
+    spec.aspectRatio = aspect;
+    spec.seed = seed;
+    SimulationParameters parameters;
+    parameters.friction = 0;
+    parameters.servo.maxStrainRate = 20;
+    Simulation simulation(generateGridAssembly(spec, parameters));
+    for (int axis = 0; axis < 2; ++axis) {
+        simulation.setAxisControl(axis, AxisControl{AxisMode::Stress, 0, 1e5});
+    }
+    simulation.advance(steps);
+    return simulation;
+}
+
 /// A dense frictionless-compacted assembly at 100 kPa (computed once per aspect ratio and
 /// test binary): `count` grains, velocities cleared.
 SimulationState denseAssembly(int count, double aspect);

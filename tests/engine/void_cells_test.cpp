@@ -15,6 +15,7 @@
 #include "grainlab/simulation.h"
 #include "grainlab/void_cells.h"
 #include "networks.h"
+#include "scenes.h"
 
 namespace grainlab {
 namespace {
@@ -267,23 +268,7 @@ TEST(VoidCells, InconsistentContactPointsAreFlaggedNotFatal) {
     EXPECT_THROW(computeVoidCells(net, std::vector<std::uint8_t>(3, 1)), std::invalid_argument);
 }
 
-/// Compacts `count` grains of aspect ratio `aspect` isotropically to 100 kPa, frictionless.
-Simulation compactedPacking(int count, double aspect, std::uint64_t seed, std::int64_t steps) {
-    AssemblySpec spec;
-    spec.grainCount = count;
-    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 5);
-    spec.aspectRatio = aspect;
-    spec.seed = seed;
-    SimulationParameters parameters;
-    parameters.friction = 0;
-    parameters.servo.maxStrainRate = 20;
-    Simulation simulation(generateGridAssembly(spec, parameters));
-    for (int axis = 0; axis < 2; ++axis) {
-        simulation.setAxisControl(axis, AxisControl{AxisMode::Stress, 0, 1e5});
-    }
-    simulation.advance(steps);
-    return simulation;
-}
+using test::compactedPacking;
 
 /// The two invariants of SPEC §4 and the consistency of every cell with the network.
 void checkInvariants(const ContactNetwork& net) {
