@@ -184,7 +184,7 @@ public:
         }
         return true;
     }
-    SnapshotPtr snapshot() const override { return run_->snapshot(); }
+    std::shared_ptr<Snapshot> snapshot() const override { return run_->snapshot(); }
     RunProgress progress() const override { return run_->progress(); }
     void keepRecordSnapshots(ui::SnapshotHistory* history) override {
         run_->keepRecordSnapshots(history);
@@ -204,7 +204,9 @@ struct WindowResult {
     double picturesPerSecond = 0; ///< new snapshots shown in the scene
     double engineCpuShare = 0;    ///< CPU time of the engine thread / wall time
     double guiCpuShare = 0;       ///< CPU time of the GUI thread / wall time
-    double snapshotMs = 0;        ///< the last snapshot's build time
+    double snapshotMs = 0;        ///< the engine thread's time to copy the last snapshot
+    double publishingShare = 0;   ///< the engine thread's time on snapshots / wall time
+    double measureMs = 0;         ///< the finisher's time on the last snapshot's measures
     std::uint64_t publications = 0;
     std::size_t kept = 0, keptBytes = 0; ///< the chart-hover history at the end
     bool openGL = false;
@@ -255,6 +257,8 @@ WindowResult windowStepsPerSecond(const ExperimentConfig& config, const ResumePo
     r.engineCpuShare = timing->cpuSeconds / timing->seconds;
     r.guiCpuShare = guiCpu / timing->seconds;
     r.snapshotMs = 1e3 * status.snapshotSeconds;
+    r.publishingShare = status.publishingSeconds / timing->seconds;
+    r.measureMs = 1e3 * status.measureSeconds;
     r.publications = status.publications;
     r.kept = window.controller().history().size();
     r.keptBytes = window.controller().history().bytes();
@@ -327,10 +331,13 @@ void benchWindow(const BenchOptions& o, int threads) {
                    "rounds; target <= 10 %)\n",
                    v.name, v.last.openGL ? "OpenGL" : "QPainter", median(v.stepsPerSecond),
                    100.0 * median(v.slowdown));
-        fmt::print("      {:.1f} new pictures/s, {} snapshots published (the last built in {:.2f} "
-                   "ms), {} kept for chart hover ({:.1f} MB); on the processor: engine thread "
-                   "{:.0f} %, GUI thread {:.0f} % of the time\n",
-                   median(v.pictures), v.last.publications, v.last.snapshotMs, v.last.kept,
+        fmt::print("      {:.1f} new pictures/s, {} snapshots published (the last copied by the "
+                   "engine thread in {:.2f} ms, measured by the snapshot thread in {:.2f} ms; "
+                   "copies took {:.1f} % of the engine thread's time),\n      {} kept for chart "
+                   "hover ({:.1f} MB); on the processor: engine thread {:.0f} %, GUI thread "
+                   "{:.0f} % of the time\n",
+                   median(v.pictures), v.last.publications, v.last.snapshotMs, v.last.measureMs,
+                   100.0 * v.last.publishingShare, v.last.kept,
                    double(v.last.keptBytes) / (1 << 20), 100.0 * median(v.engineCpu),
                    100.0 * median(v.guiCpu));
     }

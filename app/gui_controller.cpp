@@ -22,6 +22,7 @@ constexpr std::int64_t kMaxChunk = 1 << 20;
 
 SimulationController::SimulationController(QObject* parent) : QObject(parent) {
     qRegisterMetaType<grainlab::ui::RunState>();
+    history_.setFinisher(&finisher_);
     worker_.reset(QThread::create([this] { workerLoop(); }));
     worker_->setObjectName(QStringLiteral("grainlab engine"));
     worker_->start();
@@ -103,6 +104,7 @@ bool SimulationController::ensureRun() {
         std::lock_guard lock(mutex_);
         factory = factory_;
         status_.stepsDone = 0;
+        status_.publishingSeconds = 0.0;
         status_.stepsPerSecond = status_.strainPerSecond = 0.0;
         status_.etaSeconds = -1.0;
     }
@@ -122,14 +124,24 @@ bool SimulationController::ensureRun() {
 
 void SimulationController::publish(RunState state) {
     const double start = wallSeconds();
-    SnapshotPtr snapshot = run_->snapshot();
+    std::shared_ptr<Snapshot> snapshot = run_->snapshot();
     const RunProgress progress = run_->progress();
+    const bool later = state == RunState::Running && !snapshot->measured;
+    if (!later) {
+        addSnapshotMeasures(*snapshot);
+    }
     const double now = wallSeconds();
+    std::uint64_t sequence = 0;
     {
         std::lock_guard lock(mutex_);
-        latest_ = std::move(snapshot);
+        sequence = ++publishedSequence_;
+        if (!later) {
+            latest_ = snapshot;
+            latestSequence_ = sequence;
+        }
         status_.progress = progress;
         status_.snapshotSeconds = now - start;
+        status_.publishingSeconds += now - start;
         ++status_.publications;
         // Rates over the interval since the previous publication, smoothed.
         const double dt = now - lastRateTime_;
@@ -151,6 +163,19 @@ void SimulationController::publish(RunState state) {
             lastRateFraction_ = progress.fraction;
         }
     }
+    if (later) {
+        finisher_.submit(
+            std::move(snapshot),
+            [this, sequence](SnapshotPtr done) {
+                std::lock_guard lock(mutex_);
+                if (sequence > latestSequence_) { // not overtaken by a paused picture
+                    latest_ = std::move(done);
+                    latestSequence_ = sequence;
+                }
+                status_.measureSeconds = finisher_.lastSeconds();
+            },
+            true);
+    }
     setState(state);
 }
 
@@ -167,10 +192,9 @@ void SimulationController::workerLoop() {
                 break;
             }
             commands.swap(commands_);
-            // Building a snapshot may take a while on a large assembly: publish at most so often
-            // that it costs the engine about 5 % of its time (the GUI thread's drawing competes
-            // for the processor too).
-            interval = std::max(publishInterval_, 19.0 * status_.snapshotSeconds);
+            // Copying a snapshot may take a while on a large assembly: publish at most so often
+            // that it costs the engine about 2 % of its time.
+            interval = std::max(publishInterval_, 49.0 * status_.snapshotSeconds);
         }
         try {
             for (const Command& c : commands) {

@@ -1,13 +1,16 @@
 #pragma once
 // The simulation controller: owns the run in a worker QThread and is the only bridge between the
 // engine and the GUI. The GUI thread calls start / pause / step / stop; the commands are queued
-// and applied by the worker between advance() calls. The worker publishes an immutable snapshot
-// at most every publish interval (default ~16 ms; the main window uses 33 ms) and never more
-// often than 1/20 of the time it takes to build one, so that snapshots cost the engine about 5 %
-// of its time, by swapping a mutex-guarded shared pointer; the GUI picks the newest one on
-// its own timer and never waits for the worker. It also keeps the run's history (a snapshot at
-// each shear record, within a memory budget: gui_snapshot_history.h), cleared when a new run
-// starts, for the GUI to show a past moment.
+// and applied by the worker between advance() calls. While running, the worker copies the
+// configuration into a new snapshot at most every publish interval (default ~16 ms; the main
+// window uses 33 ms) and never more often than 1/50 of the time the copy takes, so that pictures
+// cost the engine about 2 % of its time at most; the snapshot finisher (its own thread,
+// gui_snapshot_finisher.h) computes the picture's measures and publishes it by swapping a
+// mutex-guarded shared pointer. When the run pauses, steps or ends, the worker publishes a
+// complete snapshot itself, so that the paused picture is there when the state says so. The GUI
+// picks the newest snapshot on its own timer and never waits for the worker. The controller also
+// keeps the run's history (a snapshot at each shear record, within a memory budget:
+// gui_snapshot_history.h), cleared when a new run starts, for the GUI to show a past moment.
 //
 // Threads: every public function is called from the GUI thread; latestSnapshot() and status()
 // may be called from any thread. stateChanged is emitted from the worker thread (queued to
@@ -25,6 +28,7 @@
 #include <QThread>
 
 #include "gui_run.h"
+#include "gui_snapshot_finisher.h"
 #include "gui_snapshot_history.h"
 
 namespace grainlab::ui {
@@ -39,7 +43,9 @@ struct RunStatus {
     double stepsPerSecond = 0;      ///< measured over the last publications
     double strainPerSecond = 0;     ///< d eps1 / dt (wall clock) [1/s]
     double etaSeconds = -1;         ///< from the rate of progress, -1 when unknown
-    double snapshotSeconds = 0;     ///< wall time to build the last snapshot [s]
+    double snapshotSeconds = 0;     ///< engine thread's wall time to copy the last snapshot [s]
+    double publishingSeconds = 0;   ///< the engine thread's total for the run so far [s]
+    double measureSeconds = 0;      ///< the finisher's time for the last snapshot's measures [s]
     std::uint64_t publications = 0; ///< snapshots published so far
     std::string error;              ///< why the run failed
 };
@@ -92,11 +98,16 @@ private:
     bool quit_ = false;
     RunFactory factory_;
     SnapshotPtr latest_;
+    std::uint64_t latestSequence_ = 0;    ///< publication number of latest_
+    std::uint64_t publishedSequence_ = 0; ///< publications numbered so far
     RunStatus status_;
     double publishInterval_ = 1.0 / 60.0;
 
     // Filled by the run on the worker thread, read by the GUI; locks itself.
     SnapshotHistory history_;
+    // Completes the running pictures and the history's; declared after what its jobs touch, so
+    // that it is joined before they go.
+    SnapshotFinisher finisher_;
 
     // Worker thread only.
     std::unique_ptr<SteppedRun> run_;

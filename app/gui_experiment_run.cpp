@@ -29,7 +29,9 @@ public:
     ExperimentRun(const ExperimentConfig& config, ResumePoint resume)
         : runner_(config, std::move(resume), this) {}
     bool advance(std::int64_t maxSteps) override { return runner_.advance(maxSteps); }
-    SnapshotPtr snapshot() const override { return runner_.snapshot(); }
+    std::shared_ptr<Snapshot> snapshot() const override {
+        return runner_.snapshot(SnapshotMeasures::Later);
+    }
     RunProgress progress() const override { return runner_.progress(); }
     void keepRecordSnapshots(SnapshotHistory* history) override { history_ = history; }
 
@@ -58,14 +60,15 @@ private:
     void checkpoint(const std::string&, const SimulationState&, const std::string&) override {}
     void sample(double, const SimulationState&) override {}
 
-    /// The scene now (grains, contacts, measures), without the series: the charts draw those
-    /// from the live snapshot, and a copy in every kept snapshot would dominate the memory.
-    SnapshotPtr recordSnapshot() {
+    /// The scene now (grains, contacts; the history has the measures computed off this thread),
+    /// without the series: the charts draw those from the live snapshot, and a copy in every
+    /// kept snapshot would dominate the memory.
+    std::shared_ptr<Snapshot> recordSnapshot() {
         const RunProgress p = runner_.progress();
         if (p.test != thetaTest_) {
             // The runner keeps the orientations at the start of the test to itself; its own
             // snapshot's rotation is theta - theta0, so theta0 = theta - rotation. Once per test.
-            const SnapshotPtr full = runner_.snapshot();
+            const SnapshotPtr full = runner_.snapshot(SnapshotMeasures::Later);
             thetaAtTestStart_.resize(full->theta.size());
             for (std::size_t i = 0; i < full->theta.size(); ++i) {
                 thetaAtTestStart_[i] = full->theta[i] - full->rotation[i];
@@ -77,7 +80,7 @@ private:
         s->test = p.test;
         s->axialStrain = p.axialStrain;
         s->progress = p.fraction;
-        fillSnapshotScene(*s, runner_.simulation(), thetaAtTestStart_);
+        fillSnapshotScene(*s, runner_.simulation(), thetaAtTestStart_, SnapshotMeasures::Later);
         return s;
     }
 

@@ -19,7 +19,9 @@ public:
     virtual ~SteppedRun() = default;
     /// Advances by at most `maxSteps` steps; false once the run is finished. May throw.
     virtual bool advance(std::int64_t maxSteps) = 0;
-    virtual SnapshotPtr snapshot() const = 0;
+    /// A new snapshot of now, not yet shared, possibly without its measures (Snapshot::measured
+    /// false: the controller completes it off the engine's thread).
+    virtual std::shared_ptr<Snapshot> snapshot() const = 0;
     virtual RunProgress progress() const = 0;
     /// From now on, adds a snapshot of the run at each of its shear records to `history` (the
     /// ones the history wants; see gui_snapshot_history.h), during advance(). The history

@@ -48,12 +48,42 @@ bool SnapshotHistory::wants(std::int64_t record) const {
     return record % stride_ == 0;
 }
 
-void SnapshotHistory::add(std::int64_t record, SnapshotPtr snapshot) {
+void SnapshotHistory::setFinisher(SnapshotFinisher* finisher) {
+    std::lock_guard lock(mutex_);
+    finisher_ = finisher;
+}
+
+void SnapshotHistory::add(std::int64_t record, std::shared_ptr<Snapshot> snapshot) {
     if (!snapshot) {
         return;
     }
+    std::uint64_t generation = 0;
+    SnapshotFinisher* finisher = nullptr;
+    {
+        std::lock_guard lock(mutex_);
+        if (record % stride_ != 0) {
+            return;
+        }
+        generation = generation_;
+        finisher = finisher_;
+    }
+    if (snapshot->measured) {
+        keep(record, generation, std::move(snapshot));
+    } else if (finisher) {
+        finisher->submit(
+            std::move(snapshot),
+            [this, record, generation](SnapshotPtr done) { keep(record, generation, done); },
+            false);
+    } else {
+        addSnapshotMeasures(*snapshot);
+        keep(record, generation, std::move(snapshot));
+    }
+}
+
+void SnapshotHistory::keep(std::int64_t record, std::uint64_t generation, SnapshotPtr snapshot) {
     std::lock_guard lock(mutex_);
-    if (record % stride_ != 0 || (!entries_.empty() && record <= entries_.back().record)) {
+    if (generation != generation_ || record % stride_ != 0 ||
+        (!entries_.empty() && record <= entries_.back().record)) {
         return;
     }
     const std::size_t bytes = snapshotBytes(*snapshot);
@@ -116,6 +146,7 @@ void SnapshotHistory::clear() {
     entries_.clear();
     bytes_ = 0;
     stride_ = 1;
+    ++generation_;
 }
 
 std::size_t SnapshotHistory::size() const {

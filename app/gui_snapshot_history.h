@@ -9,7 +9,9 @@
 //
 // Threads: the run adds snapshots on the controller's worker thread (SteppedRun::
 // keepRecordSnapshots); the GUI thread looks them up. Every member function locks the history's
-// own mutex; the snapshots are immutable and shared.
+// own mutex; the snapshots are immutable and shared. A snapshot added without its measures is
+// completed first, by the finisher when one is set (then it becomes visible a few ms later), or
+// else on the caller's thread.
 
 #include <cstddef>
 #include <cstdint>
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "grainlab/snapshot.h"
+#include "gui_snapshot_finisher.h"
 
 namespace grainlab::ui {
 
@@ -32,9 +35,11 @@ public:
     /// Whether record `record` (the run's shear records counted from 0) would be kept: the run
     /// asks before it builds the snapshot.
     bool wants(std::int64_t record) const;
-    /// Keeps `snapshot` as record `record` (ignored when not wanted), then thins while over the
-    /// budget or the count.
-    void add(std::int64_t record, SnapshotPtr snapshot);
+    /// Keeps `snapshot` (not yet shared with anyone) as record `record` (ignored when not
+    /// wanted), then thins while over the budget or the count.
+    void add(std::int64_t record, std::shared_ptr<Snapshot> snapshot);
+    /// Completes unmeasured snapshots on `finisher` (which must outlive the history's use).
+    void setFinisher(SnapshotFinisher* finisher);
     /// The kept snapshot of test `test` whose eps1 is nearest `eps1`; when `test` has none, of
     /// the test of the newest kept snapshot. Null when nothing is kept.
     SnapshotPtr nearest(const std::string& test, double eps1) const;
@@ -52,6 +57,7 @@ public:
 
 private:
     void thinLocked();
+    void keep(std::int64_t record, std::uint64_t generation, SnapshotPtr snapshot);
 
     struct Entry {
         std::int64_t record;
@@ -65,6 +71,8 @@ private:
     std::int64_t stride_ = 1;
     std::size_t bytes_ = 0;
     std::vector<Entry> entries_; ///< by increasing record
+    std::uint64_t generation_ = 0; ///< counts clear(): a snapshot finished after one is dropped
+    SnapshotFinisher* finisher_ = nullptr;
 };
 
 /// Heap bytes held by a snapshot, estimated from its vectors' capacities.

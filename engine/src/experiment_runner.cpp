@@ -487,7 +487,7 @@ ExperimentRunner::seriesRowsAtCheckpoint(const std::string& runnerState) {
     return out;
 }
 
-SnapshotPtr ExperimentRunner::snapshot() const {
+std::shared_ptr<Snapshot> ExperimentRunner::snapshot(SnapshotMeasures measures) const {
     const Impl& m = *impl_;
     const Simulation& sim = *m.sim;
     auto snap = std::make_shared<Snapshot>();
@@ -496,7 +496,7 @@ SnapshotPtr ExperimentRunner::snapshot() const {
     snap->test = p.test;
     snap->axialStrain = p.axialStrain;
     snap->progress = p.fraction;
-    fillSnapshotScene(*snap, sim, m.thetaAtTestStart);
+    fillSnapshotScene(*snap, sim, m.thetaAtTestStart, measures);
     snap->series = m.series;
     return snap;
 }

@@ -6,7 +6,7 @@
 namespace grainlab {
 
 void fillSnapshotScene(Snapshot& snap, const Simulation& sim,
-                       const std::vector<double>& thetaAtStart) {
+                       const std::vector<double>& thetaAtStart, SnapshotMeasures measures) {
     const SimulationState& s = sim.stateRef();
     snap.step = sim.stepCount();
     snap.time = sim.time();
@@ -21,6 +21,22 @@ void fillSnapshotScene(Snapshot& snap, const Simulation& sim,
         for (std::size_t i = 0; i < s.grains.size(); ++i) {
             snap.rotation[i] = s.grains.theta[i] - thetaAtStart[i];
         }
+    }
+    snap.measured = false;
+    snap.loadBearing.clear();
+    snap.voidCells.clear();
+    if (measures == SnapshotMeasures::Now) {
+        addSnapshotMeasures(snap);
+    }
+}
+
+void addSnapshotMeasures(Snapshot& snap) {
+    if (snap.measured) {
+        return;
+    }
+    if (snap.network.x1.empty()) {
+        snap.measured = true; // no grains, nothing to measure
+        return;
     }
     const MeasureSet measures = computeMeasures(snap.network);
     snap.loadBearing = measures.loadBearing.grainInGraph;
@@ -43,6 +59,7 @@ void fillSnapshotScene(Snapshot& snap, const Simulation& sim,
         }
         snap.voidCells.push_back(std::move(v));
     }
+    snap.measured = true;
 }
 
 } // namespace grainlab

@@ -12,6 +12,7 @@
 #include "grainlab/assembly.h"
 #include "grainlab/measures.h"
 #include "grainlab/simulation.h"
+#include "grainlab/snapshot.h"
 #include "networks.h"
 #include "scenes.h"
 
@@ -416,6 +417,34 @@ TEST(MeasuresPacking, UnbalancedForceSmallAtEquilibriumLargeWhenPerturbed) {
     }
     Simulation moved(displaced);
     EXPECT_GT(computeMeasures(moved.contactNetwork()).unbalancedForce, 10.0);
+}
+
+TEST(MeasuresPacking, ASnapshotMeasuredLaterEqualsOneMeasuredAtOnce) {
+    // The live window copies the configuration on the engine's thread and measures elsewhere.
+    const Simulation simulation = test::compactedPacking(200, 0.6, 3, 30000);
+    Snapshot now, later;
+    fillSnapshotScene(now, simulation);
+    fillSnapshotScene(later, simulation, {}, SnapshotMeasures::Later);
+    EXPECT_TRUE(now.measured);
+    EXPECT_FALSE(later.measured);
+    EXPECT_TRUE(later.voidCells.empty());
+    EXPECT_TRUE(later.loadBearing.empty());
+    EXPECT_EQ(later.x1, now.x1);
+    EXPECT_EQ(later.network.contacts.size(), now.network.contacts.size());
+    addSnapshotMeasures(later);
+    EXPECT_TRUE(later.measured);
+    EXPECT_EQ(later.loadBearing, now.loadBearing);
+    ASSERT_EQ(later.voidCells.size(), now.voidCells.size());
+    ASSERT_GT(now.voidCells.size(), 50u);
+    for (std::size_t v = 0; v < now.voidCells.size(); ++v) {
+        EXPECT_EQ(later.voidCells[v].grains, now.voidCells[v].grains);
+        EXPECT_EQ(later.voidCells[v].x1, now.voidCells[v].x1);
+        EXPECT_EQ(later.voidCells[v].area, now.voidCells[v].area);
+    }
+    // Measuring twice changes nothing.
+    const std::size_t cells = later.voidCells.size();
+    addSnapshotMeasures(later);
+    EXPECT_EQ(later.voidCells.size(), cells);
 }
 
 } // namespace

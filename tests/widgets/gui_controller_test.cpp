@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "gui_controller.h"
+#include "test_scenes.h"
 
 namespace grainlab::ui {
 namespace {
@@ -18,8 +19,10 @@ namespace {
 /// A run that counts steps; each advance() takes about 1 microsecond per step.
 class CountingRun final : public SteppedRun {
 public:
-    explicit CountingRun(std::int64_t total, std::int64_t failAt = -1)
-        : total_(total), failAt_(failAt) {}
+    /// With a `scene`, each snapshot is a copy of it without its measures (as the experiment
+    /// run's are).
+    explicit CountingRun(std::int64_t total, std::int64_t failAt = -1, SnapshotPtr scene = {})
+        : total_(total), failAt_(failAt), scene_(std::move(scene)) {}
     bool advance(std::int64_t maxSteps) override {
         const std::int64_t n = std::min(maxSteps, total_ - steps_);
         if (failAt_ >= 0 && steps_ + n >= failAt_) {
@@ -29,8 +32,13 @@ public:
         steps_ += n;
         return steps_ < total_;
     }
-    SnapshotPtr snapshot() const override {
-        auto s = std::make_shared<Snapshot>();
+    std::shared_ptr<Snapshot> snapshot() const override {
+        auto s = scene_ ? std::make_shared<Snapshot>(*scene_) : std::make_shared<Snapshot>();
+        if (scene_) {
+            s->measured = false;
+            s->loadBearing.clear();
+            s->voidCells.clear();
+        }
         s->step = steps_;
         s->axialStrain = 1e-6 * double(steps_);
         return s;
@@ -47,6 +55,7 @@ public:
 
 private:
     std::int64_t steps_ = 0, total_, failAt_;
+    SnapshotPtr scene_;
 };
 
 template <class Predicate>
@@ -100,6 +109,33 @@ TEST(SimulationController, RunsPublishesAtMostEvery16msAndPauses) {
     EXPECT_NE(c.latestSnapshot(), nullptr); // the last picture stays
 }
 
+TEST(SimulationController, RunningPicturesAreMeasuredOffTheEngineThreadPausedOnesAtOnce) {
+    static const SnapshotPtr scene = testing::makeCompactedSnapshot();
+    ASSERT_FALSE(scene->voidCells.empty());
+    SimulationController c;
+    c.setRunFactory([] { return std::make_unique<CountingRun>(100000000, -1, scene); });
+    c.start();
+    ASSERT_TRUE(waitFor([&] {
+        const SnapshotPtr s = c.latestSnapshot();
+        return s && s->step > 0 && c.status().state == RunState::Running;
+    }));
+    const SnapshotPtr running = c.latestSnapshot();
+    EXPECT_TRUE(running->measured);
+    EXPECT_EQ(running->voidCells.size(), scene->voidCells.size());
+    EXPECT_EQ(running->loadBearing, scene->loadBearing);
+    EXPECT_GT(c.status().measureSeconds, 0.0); // measured by the finisher
+    c.pause();
+    ASSERT_TRUE(waitFor([&] { return c.status().state == RunState::Paused; }));
+    // The paused picture is published with the state, complete, and stays: no running picture
+    // still being measured replaces it.
+    const SnapshotPtr paused = c.latestSnapshot();
+    EXPECT_EQ(paused->step, c.status().stepsDone);
+    EXPECT_TRUE(paused->measured);
+    EXPECT_EQ(paused->voidCells.size(), scene->voidCells.size());
+    QTest::qWait(100);
+    EXPECT_EQ(c.latestSnapshot(), paused);
+}
+
 TEST(SimulationController, FinishesAndReportsFailures) {
     SimulationController c;
     c.setRunFactory([] { return std::make_unique<CountingRun>(20000); });
@@ -121,7 +157,7 @@ TEST(SimulationController, GuiCallsNeverWaitForALongAdvance) {
             std::this_thread::sleep_for(std::chrono::milliseconds(200));
             return true;
         }
-        SnapshotPtr snapshot() const override { return std::make_shared<Snapshot>(); }
+        std::shared_ptr<Snapshot> snapshot() const override { return std::make_shared<Snapshot>(); }
         RunProgress progress() const override { return {}; }
     };
     SimulationController c;

@@ -1,14 +1,19 @@
 // The live run's snapshot history: keeps every record until its count or memory budget is
 // exceeded, then drops every other kept snapshot and keeps every other record from then on (the
 // kept records stay evenly spaced); finds the kept snapshot of a test nearest an eps1.
+#include <atomic>
+#include <chrono>
+#include <thread>
+
 #include <gtest/gtest.h>
 
 #include "gui_snapshot_history.h"
+#include "test_scenes.h"
 
 namespace grainlab::ui {
 namespace {
 
-SnapshotPtr recordSnapshot(const std::string& test, double eps1, int grains = 10) {
+std::shared_ptr<Snapshot> recordSnapshot(const std::string& test, double eps1, int grains = 10) {
     auto s = std::make_shared<Snapshot>();
     s->test = test;
     s->axialStrain = eps1;
@@ -81,6 +86,71 @@ TEST(SnapshotHistory, NearestOfTheTestOrElseOfTheNewestTest) {
     ASSERT_NE(b, nullptr);
     EXPECT_EQ(b->test, "p025kPa");
     EXPECT_DOUBLE_EQ(b->axialStrain, 1e-4 * 4);
+}
+
+/// `complete` without its measures, as the live run builds the pictures it keeps.
+std::shared_ptr<Snapshot> unmeasuredCopy(const Snapshot& complete, std::int64_t step) {
+    auto s = std::make_shared<Snapshot>(complete);
+    s->measured = false;
+    s->loadBearing.clear();
+    s->voidCells.clear();
+    s->step = step;
+    s->axialStrain = 1e-4 * double(step);
+    return s;
+}
+
+TEST(SnapshotHistory, KeepsUnmeasuredSnapshotsOnceTheFinisherMeasuredThem) {
+    static const SnapshotPtr complete = testing::makeCompactedSnapshot();
+    ASSERT_FALSE(complete->voidCells.empty());
+    SnapshotFinisher finisher;
+    SnapshotHistory history;
+    history.setFinisher(&finisher);
+    for (int r = 0; r < 5; ++r) {
+        history.add(r, unmeasuredCopy(*complete, r));
+    }
+    finisher.drain();
+    ASSERT_EQ(history.size(), 5u);
+    const SnapshotPtr kept = history.nearest(complete->test, 3e-4);
+    ASSERT_NE(kept, nullptr);
+    EXPECT_EQ(kept->step, 3);
+    EXPECT_TRUE(kept->measured);
+    EXPECT_EQ(kept->loadBearing, complete->loadBearing);
+    ASSERT_EQ(kept->voidCells.size(), complete->voidCells.size());
+    for (std::size_t v = 0; v < kept->voidCells.size(); ++v) {
+        EXPECT_EQ(kept->voidCells[v].grains, complete->voidCells[v].grains);
+        EXPECT_DOUBLE_EQ(kept->voidCells[v].area, complete->voidCells[v].area);
+    }
+    // Without a finisher, add() measures on the caller's thread.
+    SnapshotHistory direct;
+    direct.add(0, unmeasuredCopy(*complete, 0));
+    ASSERT_EQ(direct.size(), 1u);
+    EXPECT_EQ(direct.nearest(complete->test, 0.0)->voidCells.size(), complete->voidCells.size());
+}
+
+TEST(SnapshotHistory, ASnapshotMeasuredAfterClearIsDropped) {
+    static const SnapshotPtr complete = testing::makeCompactedSnapshot();
+    SnapshotFinisher finisher;
+    SnapshotHistory history;
+    history.setFinisher(&finisher);
+    // Hold the finisher on a job of its own until the history has been cleared (a new run).
+    std::atomic<bool> release{false};
+    finisher.submit(
+        std::make_shared<Snapshot>(),
+        [&](SnapshotPtr) {
+            while (!release) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            }
+        },
+        false);
+    history.add(0, unmeasuredCopy(*complete, 0));
+    history.clear();
+    release = true;
+    finisher.drain();
+    EXPECT_EQ(history.size(), 0u);
+    // The next run's snapshots are kept again.
+    history.add(0, unmeasuredCopy(*complete, 0));
+    finisher.drain();
+    EXPECT_EQ(history.size(), 1u);
 }
 
 } // namespace

@@ -76,8 +76,10 @@ public:
     const Simulation& simulation() const;
     /// Every test's series so far.
     const std::vector<SeriesTable>& series() const;
-    /// Builds an immutable snapshot of now (measures computed here, not per step).
-    SnapshotPtr snapshot() const;
+    /// Builds an immutable snapshot of now (measures computed here, not per step, unless
+    /// `measures` is Later: see addSnapshotMeasures()).
+    /// The snapshot is new and not yet shared: the caller may complete it before publishing.
+    std::shared_ptr<Snapshot> snapshot(SnapshotMeasures measures = SnapshotMeasures::Now) const;
     /// Writes a checkpoint of now through the output (e.g. on Ctrl-C).
     void checkpointNow(const std::string& name);
     /// Rows per test in a runner state string: what a resumed run keeps of each series.

@@ -41,6 +41,8 @@ struct Snapshot {
     std::vector<double> x1, x2, theta;     ///< centres wrapped into the cell [m], orientation [rad]
     std::vector<double> rotation;          ///< rotation since the start of the test [rad]
     ContactNetwork network;                ///< touching contacts (cell, centres, forces)
+    /// False while the two members below are still to be computed (SnapshotMeasures::Later).
+    bool measured = false;
     std::vector<std::uint8_t> loadBearing; ///< per grain: 1 if in the load-bearing graph
     std::vector<VoidCellView> voidCells;
     std::vector<SeriesTable> series;       ///< every test's series so far (the live one last)
@@ -50,11 +52,22 @@ using SnapshotPtr = std::shared_ptr<const Snapshot>;
 
 class Simulation;
 
+/// Whether filling a snapshot also computes its measures (load-bearing flags, void cells), or
+/// leaves them to addSnapshotMeasures() on another thread: the live window does that, so that
+/// the engine's thread spends only the copy of the configuration on each picture.
+enum class SnapshotMeasures { Now, Later };
+
 /// Fills the scene of `snapshot` from the simulation's current configuration: shapes, grains
-/// (centres wrapped into the cell), the contact network, the load-bearing flags and the void
-/// cells (measures computed here). `thetaAtStart` gives each grain's orientation at the start
-/// of the test for `rotation` (empty: rotation 0). Called on the thread that owns `simulation`.
+/// (centres wrapped into the cell), the contact network and, unless `measures` is Later, the
+/// load-bearing flags and the void cells. `thetaAtStart` gives each grain's orientation at the
+/// start of the test for `rotation` (empty: rotation 0). Called on the thread that owns
+/// `simulation`.
 void fillSnapshotScene(Snapshot& snapshot, const Simulation& simulation,
-                       const std::vector<double>& thetaAtStart = {});
+                       const std::vector<double>& thetaAtStart = {},
+                       SnapshotMeasures measures = SnapshotMeasures::Now);
+
+/// Computes the load-bearing flags and the void cells of `snapshot` from its contact network
+/// (no effect when it is already measured). Needs no simulation: any thread, before publication.
+void addSnapshotMeasures(Snapshot& snapshot);
 
 } // namespace grainlab
