@@ -11,6 +11,7 @@
 
 #include "grainlab/ui/gl_scene_layer.h"
 #include "grainlab/ui/scene_view.h"
+#include "overlay_points.h"
 #include "test_scenes.h"
 
 namespace grainlab::ui {
@@ -86,6 +87,61 @@ TEST(GlSceneLayer, DrawsGrainsWhereTheSnapshotHasThem) {
     }
     EXPECT_GT(empty, 10);
     EXPECT_GT(agree, 0.97 * total);
+}
+
+TEST(GlSceneLayer, DrawsVoidCellsAndForceChainsWithTheirColours) {
+    // The OpenGL layer draws void cells as triangles and force chains as instanced quads: each
+    // cell's fill over the grains below it, each strong chain's colour, as the QPainter view.
+    ASSERT_TRUE(SceneView::openGLAvailable() || !openGLRequired()) << "no OpenGL under xvfb";
+    if (!SceneView::openGLAvailable()) {
+        GTEST_SKIP() << "no OpenGL 3.3 on platform "
+                     << QGuiApplication::platformName().toStdString();
+    }
+    const QSize size(700, 700);
+    SceneView view;
+    view.resize(size);
+    ASSERT_TRUE(view.setUseOpenGL(true));
+    SceneOptions options = view.renderer().options();
+    options.caption = options.scaleBar = false;
+    view.setOptions(options);
+    view.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+    view.setSnapshot(testing::makeCompactedSnapshot());
+    const QImage below = view.glLayer()->grabFramebuffer();
+    ASSERT_TRUE(view.glLayer()->shadersReady()) << view.glLayer()->failure().toStdString();
+    const SceneRenderer& r = view.renderer();
+
+    options.voidCells = VoidCellShading::Valence;
+    view.setOptions(options);
+    const QImage shaded = view.glLayer()->grabFramebuffer();
+    const auto cells = testing::voidCellCentroids(r, size);
+    EXPECT_GT(cells.size(), r.snapshot()->voidCells.size() / 3);
+    for (const auto& [cell, pixel] : cells) {
+        EXPECT_TRUE(
+            near(shaded.pixel(pixel), testing::blended(r.voidCellColour(cell), below.pixel(pixel))))
+            << "void cell " << cell << " at " << pixel.x() << "," << pixel.y();
+    }
+
+    options.voidCells = VoidCellShading::Off;
+    options.forceChains = ForceChains::Strong;
+    view.setOptions(options);
+    const QImage chains = view.glLayer()->grabFramebuffer();
+    const auto midpoints = testing::strongChainMidpoints(r, size);
+    EXPECT_GT(midpoints.size(), 20u);
+    for (const auto& [force, pixel] : midpoints) {
+        EXPECT_TRUE(near(chains.pixel(pixel), r.forceChainColour(force)))
+            << "chain of " << force << " N at " << pixel.x() << "," << pixel.y();
+    }
+
+    // Everything together, for a look by hand next to the QPainter picture.
+    options.voidCells = VoidCellShading::Valence;
+    options.periodicImages = true;
+    options.selectedVoidCell = 3;
+    view.setOptions(options);
+    view.fitToCell();
+    QDir().mkpath(QStringLiteral("test-images"));
+    view.glLayer()->grabFramebuffer().save(QStringLiteral("test-images/gl-overlays.png"));
+    view.renderImage().save(QStringLiteral("test-images/gl-overlays-qpainter.png"));
 }
 
 } // namespace

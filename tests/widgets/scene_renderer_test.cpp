@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "grainlab/ui/scene_renderer.h"
+#include "overlay_points.h"
 #include "test_scenes.h"
 
 namespace grainlab::ui {
@@ -117,6 +118,137 @@ TEST(SceneRenderer, GrainColourAtEveryCentreAndCellFillFarFromGrains) {
     EXPECT_TRUE(sameColour(image.pixel(1, 1), r.options().background));
     EXPECT_TRUE(
         sameColour(image.pixel(size.width() - 2, size.height() - 2), r.options().background));
+}
+
+TEST(SceneRenderer, VoidCellsAndForceChainsShowTheirColours) {
+    // Void cells and force chains are painted in batches (one path per colour or force bin):
+    // each cell still shows its own fill over what lies below it, each strong chain its colour.
+    const QSize size(700, 700);
+    for (VoidCellShading shading : {VoidCellShading::Valence, VoidCellShading::Area}) {
+        SceneRenderer r = plainRenderer(size);
+        const QImage below = render(r, size);
+        r.options().voidCells = shading;
+        const QImage shaded = render(r, size);
+        const auto points = testing::voidCellCentroids(r, size);
+        EXPECT_GT(points.size(), scene()->voidCells.size() / 3);
+        int distinct = 0;
+        for (const auto& [cell, pixel] : points) {
+            const QColor fill = r.voidCellColour(cell);
+            EXPECT_EQ(fill.alpha(), 120);
+            distinct += fill != r.voidCellColour(points.front().cell);
+            EXPECT_TRUE(
+                sameColour(shaded.pixel(pixel), testing::blended(fill, below.pixel(pixel)), 3))
+                << "shading " << int(shading) << " void cell " << cell << " at " << pixel.x() << ","
+                << pixel.y();
+        }
+        EXPECT_GT(distinct, 0) << "every cell has the same colour";
+    }
+
+    SceneRenderer r = plainRenderer(size);
+    r.options().forceChains = ForceChains::Strong;
+    const QImage chains = render(r, size);
+    const auto points = testing::strongChainMidpoints(r, size);
+    EXPECT_GT(points.size(), 20u);
+    for (const auto& [force, pixel] : points) {
+        const QColor colour = r.forceChainColour(force);
+        EXPECT_EQ(colour.alpha(), 255); // strong chains are opaque
+        EXPECT_TRUE(sameColour(chains.pixel(pixel), colour, 3))
+            << "chain of " << force << " N at " << pixel.x() << "," << pixel.y();
+    }
+}
+
+TEST(SceneRenderer, WideGrainsKeepTheirOutlineAndADarkerEdge) {
+    // Fills are aliased and outlines have as few vertices as stay within a quarter of a pixel of
+    // the true outline: 3 pixels inside the true outline, every grain still shows its own fill;
+    // near its edge, a pixel darker than the fill (the antialiased outline, of the fill's colour
+    // 1.6 times darker, which hides the aliased fill's staircase).
+    const QSize size(700, 700);
+    SceneRenderer r = plainRenderer(size);
+    const QImage image = render(r, size);
+    const Snapshot& s = *scene();
+    const double pixel = 1.0 / r.view().pixelsPerMetre();
+    auto brightness = [](QRgb c) { return qRed(c) + qGreen(c) + qBlue(c); };
+    int edges = 0, darker = 0;
+    for (std::size_t g = 0; g < s.x1.size(); ++g) {
+        const OvalShape& shape = s.shapes[s.shape[g]];
+        ASSERT_GT(shape.halfWidth / pixel, 8.0);
+        const QColor fill = r.grainColour(static_cast<int>(g));
+        const double c = std::cos(s.theta[g]), sn = std::sin(s.theta[g]);
+        for (int k = 0; k < 24; ++k) {
+            const double alpha = 2.0 * std::acos(-1.0) * (k + 0.5) / 24.0;
+            const auto b = shape.boundaryPoint(alpha);
+            // World point at `depth` pixels along the outward normal from the boundary point.
+            auto at = [&](double depth) {
+                const double bx = b[0] + depth * pixel * std::cos(alpha);
+                const double by = b[1] + depth * pixel * std::sin(alpha);
+                const QPointF p =
+                    r.view().toScreen(s.x1[g] + c * bx - sn * by, s.x2[g] + sn * bx + c * by);
+                return QPoint(int(std::floor(p.x())), int(std::floor(p.y())));
+            };
+            const QPoint inside = at(-3.0);
+            if (!image.rect().contains(inside)) {
+                continue; // grains may stick out of the cell, and out of the view
+            }
+            EXPECT_TRUE(sameColour(image.pixel(inside), fill))
+                << "grain " << g << " direction " << k << " at " << inside.x() << "," << inside.y();
+            const QPoint edge = at(0.0);
+            if (!image.rect().adjusted(2, 2, -2, -2).contains(edge)) {
+                continue;
+            }
+            int darkest = brightness(fill.rgb());
+            for (int dy = -2; dy <= 2; ++dy) {
+                for (int dx = -2; dx <= 2; ++dx) {
+                    if (image.rect().contains(edge + QPoint(dx, dy))) {
+                        darkest = std::min(darkest, brightness(image.pixel(edge + QPoint(dx, dy))));
+                    }
+                }
+            }
+            ++edges;
+            darker += darkest < brightness(fill.rgb()) - 12;
+        }
+    }
+    // Against the white cell a dark fill's outline can fall mostly on the outer pixels, which
+    // are then lighter than the fill: most, not all, edges show a darker pixel.
+    EXPECT_GT(edges, 1000);
+    EXPECT_GT(darker, 0.95 * edges);
+}
+
+TEST(SceneRenderer, ZoomedVoidCellsShowTheirFillOnEveryRow) {
+    // Zoomed in, tall void cells are filled in bands of rows (so that Qt does not hand a tall
+    // translucent fill to its thread pool): no row is missed or blended twice.
+    const QSize size(700, 700);
+    SceneRenderer r = plainRenderer(size);
+    r.view().zoomAt(QPointF(350, 350), 3.0);
+    const QImage below = render(r, size);
+    r.options().voidCells = VoidCellShading::Valence;
+    const QImage shaded = render(r, size);
+    int tall = 0, checked = 0;
+    for (const auto& [cell, centroid] : testing::voidCellCentroids(r, size)) {
+        QPolygonF screen;
+        for (const QPointF& w : r.voidCellPolygon(cell)) {
+            screen << r.view().toScreen(w.x(), w.y());
+        }
+        tall += screen.boundingRect().height() > 70.0;
+        const QColor fill = r.voidCellColour(cell);
+        for (int y = 0; y < size.height(); ++y) {
+            const QPointF centre(centroid.x() + 0.5, y + 0.5);
+            double nearest = 1e300;
+            for (qsizetype k = 0; k < screen.size(); ++k) {
+                nearest =
+                    std::min(nearest, testing::segmentDistance(centre, screen[k],
+                                                               screen[(k + 1) % screen.size()]));
+            }
+            if (nearest < 3.0 || !screen.containsPoint(centre, Qt::OddEvenFill)) {
+                continue;
+            }
+            ++checked;
+            const QPoint p(centroid.x(), y);
+            EXPECT_TRUE(sameColour(shaded.pixel(p), testing::blended(fill, below.pixel(p)), 3))
+                << "void cell " << cell << " at " << p.x() << "," << p.y();
+        }
+    }
+    EXPECT_GT(tall, 3) << "no void cell is taller than a band";
+    EXPECT_GT(checked, 1000);
 }
 
 TEST(SceneRenderer, HitTestsFindGrainsAndVoidCells) {

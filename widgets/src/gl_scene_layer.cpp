@@ -1,10 +1,13 @@
 // See gl_scene_layer.h.
 #include "grainlab/ui/gl_scene_layer.h"
 
+#include <algorithm>
+#include <cstddef>
 #include <vector>
 
 #include <QPainter>
 
+#include "grainlab/ui/polygon_triangulation.h"
 #include "grainlab/ui/scene_renderer.h"
 
 namespace grainlab::ui {
@@ -83,6 +86,96 @@ void main() {
 }
 )";
 
+// Void cells: world-space vertices with a colour, drawn at a periodic-image shift.
+constexpr const char* kFlatVertexShader = R"(#version 330 core
+layout(location = 0) in vec2 world; // x1, x2 [m]
+layout(location = 1) in vec4 colour;
+uniform vec2 origin;
+uniform float scale;
+uniform vec2 viewport;
+uniform vec2 shift; // periodic image [m]
+flat out vec4 fill;
+void main() {
+    vec2 w = world + shift;
+    vec2 screen = vec2(origin.x + scale * w.y, origin.y - scale * w.x);
+    gl_Position = vec4(screen.x / viewport.x * 2.0 - 1.0, 1.0 - screen.y / viewport.y * 2.0, 0.0, 1.0);
+    fill = colour;
+}
+)";
+
+constexpr const char* kFlatFragmentShader = R"(#version 330 core
+flat in vec4 fill;
+out vec4 colour;
+void main() {
+    colour = fill;
+}
+)";
+
+// Force chains: one quad per segment, grown by half the width and a pixel around it; the
+// fragment shader keeps what lies within half the width of the segment (round caps), with a
+// one-pixel antialiased edge, as QPainter's round-capped pen.
+struct ChainInstance {
+    float a1, a2, b1, b2; ///< [m]
+    float width;          ///< [pixel]
+    std::uint8_t rgba[4];
+};
+
+constexpr const char* kChainVertexShader = R"(#version 330 core
+layout(location = 0) in vec2 corner;
+layout(location = 1) in vec4 ends;  // a1, a2, b1, b2 [m]
+layout(location = 2) in float width; // [px]
+layout(location = 3) in vec4 colour;
+uniform vec2 origin;
+uniform float scale;
+uniform vec2 viewport;
+out vec2 pixel;
+flat out vec2 a;
+flat out vec2 b;
+flat out float halfWidth;
+flat out vec4 fill;
+void main() {
+    a = vec2(origin.x + scale * ends.y, origin.y - scale * ends.x);
+    b = vec2(origin.x + scale * ends.w, origin.y - scale * ends.z);
+    halfWidth = 0.5 * width;
+    float len = length(b - a);
+    vec2 u = len > 1e-6 ? (b - a) / len : vec2(1.0, 0.0);
+    vec2 n = vec2(-u.y, u.x);
+    float reach = halfWidth + 1.0;
+    pixel = 0.5 * (a + b) + u * corner.x * (0.5 * len + reach) + n * corner.y * reach;
+    gl_Position = vec4(pixel.x / viewport.x * 2.0 - 1.0, 1.0 - pixel.y / viewport.y * 2.0, 0.0, 1.0);
+    fill = colour;
+}
+)";
+
+constexpr const char* kChainFragmentShader = R"(#version 330 core
+in vec2 pixel;
+flat in vec2 a;
+flat in vec2 b;
+flat in float halfWidth;
+flat in vec4 fill;
+out vec4 colour;
+void main() {
+    vec2 pa = pixel - a, ba = b - a;
+    float t = clamp(dot(pa, ba) / max(dot(ba, ba), 1e-12), 0.0, 1.0);
+    float alpha = clamp(halfWidth + 0.5 - length(pa - ba * t), 0.0, 1.0);
+    if (alpha <= 0.0) {
+        discard;
+    }
+    colour = vec4(fill.rgb, fill.a * alpha);
+}
+)";
+
+void toBytes(QRgb c, std::uint8_t rgba[4]) {
+    rgba[0] = std::uint8_t(qRed(c));
+    rgba[1] = std::uint8_t(qGreen(c));
+    rgba[2] = std::uint8_t(qBlue(c));
+    rgba[3] = std::uint8_t(qAlpha(c));
+}
+
+const void* byteOffset(std::size_t bytes) {
+    return reinterpret_cast<const void*>(bytes);
+}
+
 } // namespace
 
 GlSceneLayer::GlSceneLayer(const SceneRenderer& renderer, QWidget* parent)
@@ -98,18 +191,31 @@ GlSceneLayer::GlSceneLayer(const SceneRenderer& renderer, QWidget* parent)
 
 GlSceneLayer::~GlSceneLayer() {
     makeCurrent();
-    instances_.destroy();
-    quad_.destroy();
-    vao_.destroy();
+    for (QOpenGLBuffer* buffer :
+         {&instances_, &quad_, &voidTriangles_, &voidColours_, &voidEdges_, &chains_}) {
+        buffer->destroy();
+    }
+    for (QOpenGLVertexArrayObject* vao : {&vao_, &voidVao_, &voidEdgeVao_, &chainVao_}) {
+        vao->destroy();
+    }
     doneCurrent();
+}
+
+bool GlSceneLayer::buildProgram(QOpenGLShaderProgram& program, const char* vertex,
+                                const char* fragment) {
+    if (!program.addShaderFromSourceCode(QOpenGLShader::Vertex, vertex) ||
+        !program.addShaderFromSourceCode(QOpenGLShader::Fragment, fragment) || !program.link()) {
+        failure_ = program.log();
+        return false;
+    }
+    return true;
 }
 
 void GlSceneLayer::initializeGL() {
     initializeOpenGLFunctions();
-    if (!program_.addShaderFromSourceCode(QOpenGLShader::Vertex, kVertexShader) ||
-        !program_.addShaderFromSourceCode(QOpenGLShader::Fragment, kFragmentShader) ||
-        !program_.link()) {
-        failure_ = program_.log();
+    if (!buildProgram(program_, kVertexShader, kFragmentShader) ||
+        !buildProgram(flatProgram_, kFlatVertexShader, kFlatFragmentShader) ||
+        !buildProgram(chainProgram_, kChainVertexShader, kChainFragmentShader)) {
         return;
     }
     vao_.create();
@@ -123,7 +229,7 @@ void GlSceneLayer::initializeGL() {
     instances_.create();
     instances_.setUsagePattern(QOpenGLBuffer::StreamDraw);
     instances_.bind();
-    const auto offset = [](std::size_t bytes) { return reinterpret_cast<const void*>(bytes); };
+    const auto offset = byteOffset;
     const GLsizei stride = sizeof(Instance);
     const struct {
         GLuint location;
@@ -142,6 +248,50 @@ void GlSceneLayer::initializeGL() {
         glVertexAttribDivisor(a.location, 1);
     }
     vao_.release();
+
+    // Void cells: triangles with per-vertex colours, and outline edges with one colour.
+    voidVao_.create();
+    voidVao_.bind();
+    voidTriangles_.create();
+    voidTriangles_.bind();
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    voidColours_.create();
+    voidColours_.bind();
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, 4, nullptr);
+    voidVao_.release();
+    voidEdgeVao_.create();
+    voidEdgeVao_.bind();
+    voidEdges_.create();
+    voidEdges_.bind();
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    voidEdgeVao_.release();
+
+    // Force chains: the unit quad per instance.
+    chainVao_.create();
+    chainVao_.bind();
+    quad_.bind();
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    chains_.create();
+    chains_.setUsagePattern(QOpenGLBuffer::StreamDraw);
+    chains_.bind();
+    const GLsizei chainStride = sizeof(ChainInstance);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, chainStride,
+                          offset(offsetof(ChainInstance, a1)));
+    glVertexAttribDivisor(1, 1);
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, chainStride,
+                          offset(offsetof(ChainInstance, width)));
+    glVertexAttribDivisor(2, 1);
+    glEnableVertexAttribArray(3);
+    glVertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, chainStride,
+                          offset(offsetof(ChainInstance, rgba)));
+    glVertexAttribDivisor(3, 1);
+    chainVao_.release();
     ready_ = true;
 }
 
@@ -153,9 +303,135 @@ void GlSceneLayer::paintGL() {
     }
     renderer_.renderBackground(painter, size());
     painter.beginNativePainting();
-    drawGrains();
+    if (renderer_.snapshot()) {
+        const qreal ratio = devicePixelRatioF();
+        glViewport(0, 0, GLsizei(width() * ratio), GLsizei(height() * ratio));
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_STENCIL_TEST);
+        glDisable(GL_SCISSOR_TEST);
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        drawGrains();
+        drawVoidCells();
+        drawForceChains();
+    }
     painter.endNativePainting();
-    renderer_.renderOverlays(painter, size(), true);
+    renderer_.renderOverlays(painter, size(), Overlays::Annotations);
+}
+
+void GlSceneLayer::setView(QOpenGLShaderProgram& program) {
+    const ViewTransform& view = renderer_.view();
+    const QPointF origin = view.toScreen(0.0, 0.0);
+    program.setUniformValue("origin", QVector2D(float(origin.x()), float(origin.y())));
+    program.setUniformValue("scale", float(view.pixelsPerMetre()));
+    program.setUniformValue("viewport", QVector2D(float(width()), float(height())));
+}
+
+void GlSceneLayer::updateVoidCellMesh() {
+    const SnapshotPtr& snapshot = renderer_.snapshot();
+    if (snapshot == meshSnapshot_) {
+        return;
+    }
+    meshSnapshot_ = snapshot;
+    colourKey_ = -1;
+    std::vector<float> triangles, edges;
+    firstVertex_.assign(1, 0);
+    const int cells = static_cast<int>(snapshot->voidCells.size());
+    for (int v = 0; v < cells; ++v) {
+        const QPolygonF& polygon = renderer_.voidCellPolygon(v);
+        for (const auto& t : triangulatePolygon(polygon)) {
+            for (int corner : t) {
+                triangles.push_back(float(polygon[corner].x()));
+                triangles.push_back(float(polygon[corner].y()));
+            }
+        }
+        firstVertex_.push_back(static_cast<std::int32_t>(triangles.size() / 2));
+        for (qsizetype k = 0; k < polygon.size(); ++k) {
+            const QPointF& a = polygon[k];
+            const QPointF& b = polygon[(k + 1) % polygon.size()];
+            edges.insert(edges.end(), {float(a.x()), float(a.y()), float(b.x()), float(b.y())});
+        }
+    }
+    voidTriangles_.bind();
+    voidTriangles_.allocate(triangles.data(), int(triangles.size() * sizeof(float)));
+    voidEdges_.bind();
+    voidEdges_.allocate(edges.data(), int(edges.size() * sizeof(float)));
+    edgeVertices_ = static_cast<int>(edges.size() / 2);
+}
+
+void GlSceneLayer::drawVoidCells() {
+    const SceneOptions& options = renderer_.options();
+    if (options.voidCells == VoidCellShading::Off) {
+        return; // a selected cell is an annotation, painted by the renderer
+    }
+    updateVoidCellMesh();
+    const int cells = static_cast<int>(firstVertex_.size()) - 1;
+    const int selected = options.selectedVoidCell;
+    const std::int64_t key = std::int64_t(options.voidCells) * (std::int64_t(cells) + 2) +
+                             (selected >= 0 && selected < cells ? selected + 1 : 0);
+    if (key != colourKey_) {
+        colourKey_ = key;
+        std::vector<std::uint8_t> colours(std::size_t(firstVertex_.back()) * 4);
+        for (int v = 0; v < cells; ++v) {
+            // The selected cell is left out here: the renderer paints it on top, highlighted.
+            std::uint8_t rgba[4] = {0, 0, 0, 0};
+            if (v != selected) {
+                toBytes(renderer_.voidCellColour(v).rgba(), rgba);
+            }
+            for (std::int32_t k = firstVertex_[v]; k < firstVertex_[v + 1]; ++k) {
+                std::copy(rgba, rgba + 4, colours.begin() + 4 * std::size_t(k));
+            }
+        }
+        voidColours_.bind();
+        voidColours_.allocate(colours.data(), int(colours.size()));
+    }
+    const CellMatrix& h = renderer_.snapshot()->network.cell;
+    const int images = options.periodicImages ? 1 : 0;
+    flatProgram_.bind();
+    setView(flatProgram_);
+    // As the QPainter view's cosmetic 0.8 pixel pen of alpha 160: a one-pixel line of 0.8 x 160.
+    const QVector4D edgeColour(30.0f / 255, 30.0f / 255, 90.0f / 255, 0.8f * 160.0f / 255);
+    for (int pass = 0; pass < 2; ++pass) {
+        (pass == 0 ? voidVao_ : voidEdgeVao_).bind();
+        if (pass == 1) {
+            glVertexAttrib4f(1, edgeColour.x(), edgeColour.y(), edgeColour.z(), edgeColour.w());
+        }
+        for (int i = -images; i <= images; ++i) {
+            for (int j = -images; j <= images; ++j) {
+                flatProgram_.setUniformValue(
+                    "shift", QVector2D(float(h[0] * i + h[2] * j), float(h[1] * i + h[3] * j)));
+                if (pass == 0) {
+                    glDrawArrays(GL_TRIANGLES, 0, firstVertex_.back());
+                } else {
+                    glDrawArrays(GL_LINES, 0, edgeVertices_);
+                }
+            }
+        }
+    }
+    voidEdgeVao_.release();
+    flatProgram_.release();
+}
+
+void GlSceneLayer::drawForceChains() {
+    const std::vector<ChainSegment> segments = renderer_.forceChainSegments(size());
+    if (segments.empty()) {
+        return;
+    }
+    std::vector<ChainInstance> data(segments.size());
+    for (std::size_t k = 0; k < segments.size(); ++k) {
+        const ChainSegment& c = segments[k];
+        data[k] = {float(c.a1), float(c.a2), float(c.b1), float(c.b2), float(c.width), {}};
+        toBytes(c.colour, data[k].rgba);
+    }
+    chainProgram_.bind();
+    setView(chainProgram_);
+    chainVao_.bind();
+    chains_.bind();
+    chains_.allocate(data.data(), int(data.size() * sizeof(ChainInstance)));
+    // Instances are drawn in order: the strongest chains end up on top, as in the QPainter view.
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(data.size()));
+    chainVao_.release();
+    chainProgram_.release();
 }
 
 void GlSceneLayer::drawGrains() {
@@ -189,17 +465,8 @@ void GlSceneLayer::drawGrains() {
         d.rgba[2] = std::uint8_t(qBlue(g.colour));
         d.rgba[3] = std::uint8_t(qAlpha(g.colour));
     }
-    const qreal ratio = devicePixelRatioF();
-    glViewport(0, 0, GLsizei(width() * ratio), GLsizei(height() * ratio));
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     program_.bind();
-    const ViewTransform& view = renderer_.view();
-    const QPointF origin = view.toScreen(0.0, 0.0);
-    program_.setUniformValue("origin", QVector2D(float(origin.x()), float(origin.y())));
-    program_.setUniformValue("scale", float(view.pixelsPerMetre()));
-    program_.setUniformValue("viewport", QVector2D(float(width()), float(height())));
+    setView(program_);
     vao_.bind();
     instances_.bind();
     instances_.allocate(data.data(), int(data.size() * sizeof(Instance)));

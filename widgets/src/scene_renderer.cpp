@@ -1,13 +1,14 @@
-// See scene_renderer.h.
+// See scene_renderer.h. This file holds what the snapshot implies (coordination, forces, void-cell
+// polygons), the colours, the hit tests and the order of the layers; the layers themselves are
+// drawn in scene_renderer_grains.cpp, scene_renderer_overlays.cpp and
+// scene_renderer_decorations.cpp.
 #include "grainlab/ui/scene_renderer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include <QFontMetrics>
 #include <QPainter>
-#include <QPainterPath>
 
 #include "grainlab/ui/colour_maps.h"
 
@@ -15,8 +16,10 @@ namespace grainlab::ui {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr int kOutlineDetail[3] = {12, 24, 64}; ///< outline vertices per detail level
 constexpr int kRoseBins = 18;
+constexpr int kChainBins = 64;         ///< force bins between 0 and the largest force
+constexpr int kAreaColourSteps = 128;  ///< colours of void cells by area
+constexpr double kRotationSteps = 128; ///< colours of grains per sign of rotation
 
 /// Grains of the load-bearing graph (SPEC §4): drop grains without contacts, then repeatedly
 /// those with a single remaining contact.
@@ -55,11 +58,6 @@ std::vector<std::uint8_t> loadBearingGrains(const ContactNetwork& net, std::size
     return alive;
 }
 
-/// A screen direction for a world direction at angle `alpha` from x1 towards x2.
-QPointF screenDirection(double alpha) {
-    return {std::sin(alpha), -std::cos(alpha)};
-}
-
 } // namespace
 
 SceneRenderer::SceneRenderer() = default;
@@ -69,9 +67,12 @@ void SceneRenderer::setSnapshot(SnapshotPtr snapshot) {
     coordination_.clear();
     forceMagnitude_.clear();
     forceOrder_.clear();
+    chainBins_.clear();
     outlines_.clear();
     voidPolygons_.clear();
     voidBoxes_.clear();
+    voidEdges_.clear();
+    voidEdgesReady_ = false;
     roseCounts_.fill(0.0);
     maxForce_ = strongThreshold_ = meanVoidArea_ = 0.0;
     if (!snapshot_) {
@@ -80,24 +81,14 @@ void SceneRenderer::setSnapshot(SnapshotPtr snapshot) {
     const Snapshot& s = *snapshot_;
     const std::size_t n = s.x1.size();
 
-    // Shapes: size range and outlines at three detail levels.
+    // Shapes: size range. Their outlines are built when first drawn (outline()).
     minDiameter_ = 1e300;
     maxDiameter_ = maxHalfWidth_ = 0.0;
-    outlines_.resize(s.shapes.size());
-    for (std::size_t k = 0; k < s.shapes.size(); ++k) {
-        const OvalShape& shape = s.shapes[k];
+    outlines_.assign(s.shapes.size(), {});
+    for (const OvalShape& shape : s.shapes) {
         minDiameter_ = std::min(minDiameter_, shape.equivalentDiameter());
         maxDiameter_ = std::max(maxDiameter_, shape.equivalentDiameter());
         maxHalfWidth_ = std::max(maxHalfWidth_, shape.halfWidth);
-        for (int level = 0; level < 3; ++level) {
-            const int m = kOutlineDetail[level];
-            QPolygonF outline(m);
-            for (int j = 0; j < m; ++j) {
-                const auto p = shape.boundaryPoint(2.0 * kPi * j / m);
-                outline[j] = QPointF(p[0], p[1]);
-            }
-            outlines_[k][level] = outline;
-        }
     }
 
     // Contacts: coordination, force magnitudes and order, normal rose.
@@ -131,6 +122,26 @@ void SceneRenderer::setSnapshot(SnapshotPtr snapshot) {
     }
     std::sort(forceOrder_.begin(), forceOrder_.end(),
               [this](int a, int b) { return forceMagnitude_[a] < forceMagnitude_[b]; });
+    // Force bins: runs of forceOrder_ with one pen each, split at the strong threshold so that
+    // "strong" draws exactly the contacts above it. The key grows with the force.
+    chainBins_.clear();
+    auto binKey = [this](std::size_t i) {
+        const double f = forceMagnitude_[forceOrder_[i]];
+        const int bin =
+            maxForce_ > 0.0 ? std::min(kChainBins - 1, int(f / maxForce_ * kChainBins)) : 0;
+        return 2 * bin + (f > strongThreshold_ ? 1 : 0);
+    };
+    for (std::size_t i = 0; i < forceOrder_.size();) {
+        const int key = binKey(i);
+        double sum = 0.0;
+        std::size_t j = i;
+        for (; j < forceOrder_.size() && binKey(j) == key; ++j) {
+            sum += forceMagnitude_[forceOrder_[j]];
+        }
+        chainBins_.push_back({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j),
+                              sum / double(j - i), (key & 1) != 0});
+        i = j;
+    }
 
     // Void cells: shift each polygon so that its vertex mean lies inside the cell.
     const CellMatrix& h = s.network.cell;
@@ -185,8 +196,11 @@ QColor SceneRenderer::grainColour(int g) const {
         return sequentialColour(0.12 + 0.83 * t);
     }
     case GrainColouring::Rotation: {
+        // In steps, so that grains of nearly equal rotation share one brush (drawGrains).
         const double r = static_cast<std::size_t>(g) < s.rotation.size() ? s.rotation[g] : 0.0;
-        return divergingColour(r / options_.rotationRange);
+        const double t = std::clamp(r / options_.rotationRange, -1.0, 1.0);
+        return divergingColour(std::isfinite(t) ? std::round(t * kRotationSteps) / kRotationSteps
+                                                : 0.0);
     }
     case GrainColouring::Coordination:
         return sequentialColour(std::min(coordination_[g], 8) / 8.0);
@@ -197,6 +211,37 @@ QColor SceneRenderer::grainColour(int g) const {
         break;
     }
     return options_.uniformGrain;
+}
+
+QColor SceneRenderer::voidCellColour(int v) const {
+    const VoidCellView& cell = snapshot_->voidCells[v];
+    double t = 0.0;
+    if (options_.voidCells == VoidCellShading::Area && meanVoidArea_ > 0.0) {
+        // Log scale: a tenth of the mean area to ten times it, in steps, so that cells of
+        // nearly equal area share one brush.
+        t = std::clamp((std::log10(cell.area / meanVoidArea_) + 1.0) / 2.0, 0.0, 1.0);
+        t = std::isfinite(t) ? std::round(t * (kAreaColourSteps - 1)) / (kAreaColourSteps - 1)
+                             : 0.0;
+    } else {
+        t = std::clamp((cell.valence - 3) / 7.0, 0.0, 1.0);
+    }
+    QColor fill = sequentialColour(t);
+    fill.setAlpha(v == options_.selectedVoidCell ? 200 : 120);
+    return fill;
+}
+
+QColor SceneRenderer::forceChainColour(double force) const {
+    const double relative = maxForce_ > 0.0 ? std::min(1.0, force / maxForce_) : 0.0;
+    const double ratio = strongThreshold_ > 0.0 ? force / strongThreshold_ : 0.0;
+    return QColor::fromRgbF(float(0.55 + 0.35 * relative), float(0.35 * (1.0 - relative)), 0.05f,
+                            float(std::clamp(0.35 + 0.65 * ratio, 0.35, 1.0)));
+}
+
+double SceneRenderer::forceChainWidth(double force) const {
+    const double meanWidthPixels = minDiameter_ * view_.pixelsPerMetre();
+    const double unitWidth = std::max(0.6, 0.07 * meanWidthPixels); // line width at f = f_a
+    const double ratio = strongThreshold_ > 0.0 ? force / strongThreshold_ : 0.0;
+    return std::clamp(unitWidth * ratio, 0.4, 4.0 * unitWidth);
 }
 
 int SceneRenderer::grainImages(int g, std::array<std::array<int, 2>, 9>& shifts) const {
@@ -298,11 +343,10 @@ void SceneRenderer::render(QPainter& p, QSize viewport) const {
     renderBackground(p, viewport);
     if (snapshot_) {
         p.save();
-        p.setRenderHint(QPainter::Antialiasing, true);
         drawGrains(p, view_.visibleBox(QSizeF(viewport)));
         p.restore();
     }
-    renderOverlays(p, viewport, false);
+    renderOverlays(p, viewport, Overlays::All);
 }
 
 void SceneRenderer::renderBackground(QPainter& p, QSize viewport) const {
@@ -315,21 +359,21 @@ void SceneRenderer::renderBackground(QPainter& p, QSize viewport) const {
     p.restore();
 }
 
-void SceneRenderer::renderOverlays(QPainter& p, QSize viewport, bool outlineSelectedGrain) const {
+void SceneRenderer::renderOverlays(QPainter& p, QSize viewport, Overlays overlays) const {
     if (!snapshot_) {
         return;
     }
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
     const WorldBox box = view_.visibleBox(QSizeF(viewport));
-    if (outlineSelectedGrain && options_.selectedGrain >= 0 &&
-        options_.selectedGrain < static_cast<int>(snapshot_->x1.size())) {
-        drawSelectedGrainOutline(p);
+    if (overlays == Overlays::Annotations) {
+        drawSelectedGrainOutline(p, box); // render() draws it with the grains
     }
     if (options_.voidCells != VoidCellShading::Off || options_.selectedVoidCell >= 0) {
-        drawVoidCells(p, box);
+        drawVoidCells(p, box, overlays == Overlays::All);
     }
-    if (options_.forceChains != ForceChains::Off) {
+    p.setRenderHint(QPainter::Antialiasing, true);
+    if (overlays == Overlays::All && options_.forceChains != ForceChains::Off) {
         drawForceChains(p, box);
     }
     if (options_.contactRose) {
@@ -342,239 +386,6 @@ void SceneRenderer::renderOverlays(QPainter& p, QSize viewport, bool outlineSele
         drawCaption(p);
     }
     p.restore();
-}
-
-std::vector<GrainInstance> SceneRenderer::grainInstances() const {
-    std::vector<GrainInstance> out;
-    if (!snapshot_) {
-        return out;
-    }
-    const Snapshot& s = *snapshot_;
-    const CellMatrix& h = s.network.cell;
-    std::array<std::array<int, 2>, 9> shifts;
-    out.reserve(s.x1.size());
-    for (std::size_t g = 0; g < s.x1.size(); ++g) {
-        const QColor fill = grainColour(static_cast<int>(g));
-        const int count = grainImages(static_cast<int>(g), shifts);
-        for (int k = 0; k < count; ++k) {
-            out.push_back({s.x1[g] + h[0] * shifts[k][0] + h[2] * shifts[k][1],
-                           s.x2[g] + h[1] * shifts[k][0] + h[3] * shifts[k][1], s.theta[g],
-                           s.shape[g], (k == 0 ? fill : lighter(fill, 0.45)).rgba()});
-        }
-    }
-    return out;
-}
-
-void SceneRenderer::drawSelectedGrainOutline(QPainter& p) const {
-    const Snapshot& s = *snapshot_;
-    const int g = options_.selectedGrain;
-    const QPolygonF& outline = outlines_[s.shape[g]][2];
-    const double c = std::cos(s.theta[g]), sn = std::sin(s.theta[g]);
-    QPolygonF screen(outline.size());
-    for (int j = 0; j < outline.size(); ++j) {
-        const double bx = outline[j].x(), by = outline[j].y();
-        screen[j] = view_.toScreen(s.x1[g] + c * bx - sn * by, s.x2[g] + sn * bx + c * by);
-    }
-    const double radiusPixels = s.shapes[s.shape[g]].halfWidth * view_.pixelsPerMetre();
-    p.setPen(QPen(QColor(255, 140, 0), std::max(2.0, 0.15 * radiusPixels)));
-    p.setBrush(Qt::NoBrush);
-    p.drawPolygon(screen);
-}
-
-void SceneRenderer::drawCell(QPainter& p) const {
-    const CellMatrix& h = snapshot_->network.cell;
-    const QPolygonF cell{view_.toScreen(0.0, 0.0), view_.toScreen(h[0], h[1]),
-                         view_.toScreen(h[0] + h[2], h[1] + h[3]), view_.toScreen(h[2], h[3])};
-    QPen pen(QColor(90, 90, 90), 1.0);
-    pen.setCosmetic(true);
-    p.setPen(pen);
-    p.setBrush(options_.cellFill);
-    p.drawPolygon(cell);
-}
-
-void SceneRenderer::drawGrains(QPainter& p, const WorldBox& box) const {
-    const Snapshot& s = *snapshot_;
-    const CellMatrix& h = s.network.cell;
-    const double scale = view_.pixelsPerMetre();
-    const QPointF origin = view_.toScreen(0.0, 0.0);
-    std::array<std::array<int, 2>, 9> shifts;
-    QPolygonF screen;
-    for (std::size_t g = 0; g < s.x1.size(); ++g) {
-        const OvalShape& shape = s.shapes[s.shape[g]];
-        const double radiusPixels = shape.halfWidth * scale;
-        const int level = radiusPixels < 3.0 ? 0 : (radiusPixels < 12.0 ? 1 : 2);
-        const QPolygonF& outline = outlines_[s.shape[g]][level];
-        const double c = std::cos(s.theta[g]), sn = std::sin(s.theta[g]);
-        const QColor fill = grainColour(static_cast<int>(g));
-        const bool selected = static_cast<int>(g) == options_.selectedGrain;
-        const int count = grainImages(static_cast<int>(g), shifts);
-        for (int k = 0; k < count; ++k) {
-            const double c1 = s.x1[g] + h[0] * shifts[k][0] + h[2] * shifts[k][1];
-            const double c2 = s.x2[g] + h[1] * shifts[k][0] + h[3] * shifts[k][1];
-            if (!box.intersectsCircle(c1, c2, shape.halfWidth)) {
-                continue;
-            }
-            screen.resize(outline.size());
-            for (int j = 0; j < outline.size(); ++j) {
-                const double bx = outline[j].x(), by = outline[j].y();
-                const double w1 = c1 + c * bx - sn * by, w2 = c2 + sn * bx + c * by;
-                screen[j] = QPointF(origin.x() + scale * w2, origin.y() - scale * w1);
-            }
-            const QColor colour = k == 0 ? fill : lighter(fill, 0.45);
-            if (selected) {
-                p.setPen(QPen(QColor(255, 140, 0), std::max(2.0, 0.15 * radiusPixels)));
-            } else if (radiusPixels > 6.0) {
-                p.setPen(QPen(colour.darker(160), 1.0));
-            } else {
-                p.setPen(Qt::NoPen);
-            }
-            p.setBrush(colour);
-            p.drawPolygon(screen);
-        }
-    }
-}
-
-void SceneRenderer::drawVoidCells(QPainter& p, const WorldBox& box) const {
-    const Snapshot& s = *snapshot_;
-    const CellMatrix& h = s.network.cell;
-    const int images = options_.periodicImages ? 1 : 0;
-    QPolygonF screen;
-    for (std::size_t v = 0; v < voidPolygons_.size(); ++v) {
-        const bool selected = static_cast<int>(v) == options_.selectedVoidCell;
-        if (options_.voidCells == VoidCellShading::Off && !selected) {
-            continue;
-        }
-        const VoidCellView& cell = s.voidCells[v];
-        QColor fill;
-        if (options_.voidCells == VoidCellShading::Area && meanVoidArea_ > 0.0) {
-            // Log scale: a tenth of the mean area to ten times it.
-            fill = sequentialColour((std::log10(cell.area / meanVoidArea_) + 1.0) / 2.0);
-        } else {
-            fill = sequentialColour(std::clamp((cell.valence - 3) / 7.0, 0.0, 1.0));
-        }
-        fill.setAlpha(selected ? 200 : 120);
-        QPen pen(selected ? QColor(255, 140, 0) : QColor(30, 30, 90, 160), selected ? 2.5 : 0.8);
-        pen.setCosmetic(true);
-        p.setPen(pen);
-        p.setBrush(fill);
-        const auto& b = voidBoxes_[v];
-        for (int i = -images; i <= images; ++i) {
-            for (int j = -images; j <= images; ++j) {
-                const double s1 = h[0] * i + h[2] * j, s2 = h[1] * i + h[3] * j;
-                const WorldBox shifted{b[0] + s1, b[1] + s1, b[2] + s2, b[3] + s2};
-                if (shifted.max1 < box.min1 || shifted.min1 > box.max1 || shifted.max2 < box.min2 ||
-                    shifted.min2 > box.max2) {
-                    continue;
-                }
-                const QPolygonF& polygon = voidPolygons_[v];
-                screen.resize(polygon.size());
-                for (int k = 0; k < polygon.size(); ++k) {
-                    screen[k] = view_.toScreen(polygon[k].x() + s1, polygon[k].y() + s2);
-                }
-                p.drawPolygon(screen);
-            }
-        }
-    }
-}
-
-void SceneRenderer::drawForceChains(QPainter& p, const WorldBox& box) const {
-    const Snapshot& s = *snapshot_;
-    if (maxForce_ <= 0.0) {
-        return;
-    }
-    const double scale = view_.pixelsPerMetre();
-    const double meanWidthPixels = minDiameter_ * scale;
-    const double unitWidth = std::max(0.6, 0.07 * meanWidthPixels); // line width at f = f_a
-    const auto& contacts = s.network.contacts;
-    for (std::int32_t c : forceOrder_) {
-        const double f = forceMagnitude_[c];
-        if (options_.forceChains == ForceChains::Strong && f <= strongThreshold_) {
-            continue;
-        }
-        const ContactRecord& r = contacts[c];
-        const double ratio = f / strongThreshold_;
-        const double width = std::clamp(unitWidth * ratio, 0.4, 4.0 * unitWidth);
-        const QColor colour =
-            QColor::fromRgbF(float(0.55 + 0.35 * std::min(1.0, f / maxForce_)),
-                             float(0.35 * (1.0 - std::min(1.0, f / maxForce_))), 0.05f,
-                             float(std::clamp(0.35 + 0.65 * ratio, 0.35, 1.0)));
-        QPen pen(colour, width);
-        pen.setCapStyle(Qt::RoundCap);
-        p.setPen(pen);
-        const double length = std::hypot(r.branch1, r.branch2);
-        const double a1 = s.x1[r.first], a2 = s.x2[r.first];
-        if (box.intersectsCircle(a1, a2, length)) {
-            p.drawLine(view_.toScreen(a1, a2), view_.toScreen(a1 + r.branch1, a2 + r.branch2));
-        }
-        if (r.shift1 != 0 || r.shift2 != 0) {
-            // The contact crosses the border: also draw it from B's side.
-            const double b1 = s.x1[r.second], b2 = s.x2[r.second];
-            if (box.intersectsCircle(b1, b2, length)) {
-                p.drawLine(view_.toScreen(b1, b2), view_.toScreen(b1 - r.branch1, b2 - r.branch2));
-            }
-        }
-    }
-}
-
-void SceneRenderer::drawRose(QPainter& p, QSize viewport) const {
-    const double maxCount = *std::max_element(roseCounts_.begin(), roseCounts_.end());
-    const double radius = 50.0;
-    const QPointF centre(viewport.width() - radius - 14.0, radius + 14.0);
-    p.setPen(QPen(QColor(120, 120, 120), 1.0));
-    p.setBrush(QColor(255, 255, 255, 220));
-    p.drawEllipse(centre, radius, radius);
-    p.drawLine(centre + QPointF(0, radius), centre - QPointF(0, radius));
-    p.drawText(centre + QPointF(4, -radius + 12), QStringLiteral("x1"));
-    if (maxCount <= 0.0) {
-        return;
-    }
-    p.setPen(QPen(QColor(20, 60, 120), 0.8));
-    p.setBrush(QColor(60, 110, 190, 170));
-    const double width = kPi / kRoseBins;
-    for (int k = 0; k < kRoseBins; ++k) {
-        const double r = radius * roseCounts_[k] / maxCount;
-        for (double offset : {0.0, kPi}) {
-            const double a0 = k * width + offset, a1 = (k + 1) * width + offset;
-            p.drawPolygon(QPolygonF{centre, centre + r * screenDirection(a0),
-                                    centre + r * screenDirection(a1)});
-        }
-    }
-}
-
-void SceneRenderer::drawScaleBar(QPainter& p, QSize viewport) const {
-    const double scale = view_.pixelsPerMetre();
-    const double targetMillimetres = 120.0 / scale * 1e3;
-    const double decade = std::pow(10.0, std::floor(std::log10(targetMillimetres)));
-    double millimetres = decade;
-    for (double factor : {2.0, 5.0, 10.0}) {
-        if (decade * factor <= targetMillimetres) {
-            millimetres = decade * factor;
-        }
-    }
-    const double length = millimetres * 1e-3 * scale;
-    const QPointF start(16.0, viewport.height() - 16.0);
-    const QPointF end = start + QPointF(length, 0.0);
-    p.setPen(QPen(Qt::black, 2.0));
-    p.drawLine(start, end);
-    p.drawLine(start, start - QPointF(0, 6));
-    p.drawLine(end, end - QPointF(0, 6));
-    p.drawText(QRectF(start.x(), start.y() - 24.0, std::max(length, 80.0), 16.0),
-               Qt::AlignLeft | Qt::AlignBottom,
-               QStringLiteral("%1 mm").arg(millimetres, 0, 'g', 3));
-}
-
-void SceneRenderer::drawCaption(QPainter& p) const {
-    const Snapshot& s = *snapshot_;
-    const QString text = QStringLiteral("%1   step %2   ε1 = %3 %")
-                             .arg(QString::fromStdString(s.stage))
-                             .arg(s.step)
-                             .arg(100.0 * s.axialStrain, 0, 'f', 3);
-    const QRectF bounds = p.fontMetrics().boundingRect(text);
-    p.setPen(Qt::NoPen);
-    p.setBrush(QColor(255, 255, 255, 200));
-    p.drawRect(QRectF(6.0, 4.0, bounds.width() + 12.0, bounds.height() + 6.0));
-    p.setPen(Qt::black);
-    p.drawText(QPointF(12.0, 7.0 + p.fontMetrics().ascent()), text);
 }
 
 } // namespace grainlab::ui

@@ -6,7 +6,25 @@
 //
 // Used on the GUI thread by SceneView, and by exporters and tests on whatever thread owns the
 // paint device. The snapshot is immutable; the renderer keeps derived data (coordination, force
-// statistics, outlines) computed once per snapshot, so it is not itself thread-safe.
+// statistics) computed once per snapshot, and grain outlines and void-cell edges built on first
+// use (also in const functions), so it is not itself thread-safe.
+//
+// Speed: the window redraws the scene up to 30 times a second beside the running engine, on the
+// default view (800 grains about 40 pixels wide) as on the whole reference assembly (8450 grains,
+// ~6000 void cells, ~5000 strong chains). What costs in Qt's raster engine (measured, see
+// scene_renderer_grains.cpp and scene_renderer_overlays.cpp): antialiased fills (a high cost per
+// shape), and translucent fills or lines that reach ~100 spans in one call, which Qt 6 hands to
+// its GUI thread pool and waits for (tens of microseconds each, and on two cores the pool's
+// threads compete with the engine thread). So on raster devices fills are aliased and shapes wide
+// enough get an antialiased one-pixel outline that hides the staircase (vector exports get one
+// smooth shape per grain); outlines have the fewest vertices that keep them within an eighth of
+// a pixel of the true outline; pens and brushes change once per colour (items sorted by colour,
+// force chains in 64 bins); translucent void cells are filled in bands of at most 64 pixel rows
+// and outlined once per shared edge in pieces of at most 32 pixels.
+//
+// The implementation is split by what is drawn: scene_renderer.cpp (derived data, colours, hit
+// tests, the order of the layers), scene_renderer_grains.cpp, scene_renderer_overlays.cpp (void
+// cells, force chains) and scene_renderer_decorations.cpp (cell, rose, scale bar, caption).
 
 #include <array>
 #include <cstdint>
@@ -42,6 +60,20 @@ struct GrainInstance {
     double theta;       ///< orientation [rad]
     std::int32_t shape; ///< index into the snapshot's shapes
     QRgb colour;        ///< fill, images already lightened
+};
+
+/// One force-chain segment as the OpenGL layer draws it: the same bins as the QPainter view.
+struct ChainSegment {
+    double a1, a2, b1, b2; ///< end points [m]
+    double width;          ///< [pixel]
+    QRgb colour;           ///< not premultiplied
+};
+
+/// What renderOverlays() paints.
+enum class Overlays {
+    All,        ///< void cells, force chains, rose, scale bar, caption
+    Annotations ///< for the OpenGL layer, which draws void-cell shading and force chains
+                ///< itself: the selected grain's outline and void cell, rose, bar, caption
 };
 
 /// What to draw. Plain data, changed freely between frames.
@@ -82,15 +114,25 @@ public:
     /// painter). Only what is visible is drawn, with outline detail matched to the zoom.
     void render(QPainter& painter, QSize viewport) const;
     /// The parts of render() below and above the grains, for a view that draws the grains
-    /// itself (the OpenGL layer): background and cell; then void cells, force chains, the
-    /// selected grain's outline (when `outlineSelectedGrain`), rose, scale bar and caption.
+    /// itself (the OpenGL layer): background and cell; then the overlays (see Overlays).
     void renderBackground(QPainter& painter, QSize viewport) const;
-    void renderOverlays(QPainter& painter, QSize viewport, bool outlineSelectedGrain) const;
+    void renderOverlays(QPainter& painter, QSize viewport, Overlays overlays) const;
     /// Every grain and drawn periodic image with its fill colour (in the current options).
     std::vector<GrainInstance> grainInstances() const;
+    /// The force-chain segments visible in a viewport, in drawing order (weakest first), with
+    /// their widths and colours at the current zoom; empty when force chains are off.
+    std::vector<ChainSegment> forceChainSegments(QSize viewport) const;
 
     /// The fill colour of grain `grain` in the current colour mode (before image lightening).
+    /// Rotations are shown in 256 steps of colour across the range.
     QColor grainColour(int grain) const;
+    /// The fill of void cell `index` in the current shading (by area: 128 steps of colour
+    /// across the two decades), with its alpha; the selected cell's is more opaque.
+    QColor voidCellColour(int index) const;
+    /// Colour and width [pixel, at the current zoom] of a force-chain line for a contact force
+    /// of magnitude `force` [N], exactly (the views draw each bin's mean force).
+    QColor forceChainColour(double force) const;
+    double forceChainWidth(double force) const;
     /// Grain under a screen point (images included when drawn), or -1.
     int grainAt(QPointF screenPoint) const;
     /// Void cell under a screen point (cells near the border tested at their images), or -1.
@@ -106,13 +148,23 @@ public:
     bool grainContains(int grain, double c1, double c2, double x1, double x2) const;
 
 private:
+    static constexpr int kOutlineLevels = 9; ///< detail levels of the grain outlines
+
     /// Image shifts (i, j) at which grain `g` is drawn: (0, 0) first.
     int grainImages(int g, std::array<std::array<int, 2>, 9>& shifts) const;
+    /// Outline of shape `shape` in its body frame at detail `level` (built on first use).
+    const QPolygonF& outline(int shape, int level) const;
+    /// Writes grain `g` at image shift `shift` as screen points at detail `level` into `screen`
+    /// (room for outline(shape, level).size() points); returns the point count.
+    int grainScreenOutline(int g, std::array<int, 2> shift, int level, QPointF* screen) const;
     void drawCell(QPainter& p) const;
-    void drawSelectedGrainOutline(QPainter& p) const;
+    void drawSelectedGrainOutline(QPainter& p, const WorldBox& box) const;
     void drawGrains(QPainter& p, const WorldBox& box) const;
-    void drawVoidCells(QPainter& p, const WorldBox& box) const;
+    void drawVoidCells(QPainter& p, const WorldBox& box, bool shading) const;
     void drawForceChains(QPainter& p, const WorldBox& box) const;
+    /// Calls visit(bin, a1, a2, b1, b2) for every visible force-chain segment, bin by bin.
+    template <class Visit>
+    void forEachVisibleChain(const WorldBox& box, Visit&& visit) const;
     void drawRose(QPainter& p, QSize viewport) const;
     void drawScaleBar(QPainter& p, QSize viewport) const;
     void drawCaption(QPainter& p) const;
@@ -125,11 +177,23 @@ private:
     std::vector<std::uint8_t> loadBearing_; ///< the snapshot's, or computed when it has none
     std::vector<double> forceMagnitude_;    ///< per contact [N]
     std::vector<std::int32_t> forceOrder_;  ///< contacts by increasing force
+    /// Runs of forceOrder_ drawn with one pen: equal force bins, split at the strong threshold.
+    struct ChainBin {
+        std::int32_t begin, end; ///< range in forceOrder_
+        double force;            ///< mean force of the bin, which sets its pen [N]
+        bool strong;             ///< every contact of the bin is above the threshold
+    };
+    std::vector<ChainBin> chainBins_;
     double maxForce_ = 0, strongThreshold_ = 0;
     double minDiameter_ = 0, maxDiameter_ = 0, maxHalfWidth_ = 0;
-    std::vector<std::array<QPolygonF, 3>> outlines_; ///< per shape, body frame, 3 detail levels
-    std::vector<QPolygonF> voidPolygons_;            ///< world coordinates
-    std::vector<std::array<double, 4>> voidBoxes_;   ///< min1, max1, min2, max2
+    /// Per shape, body frame, by detail level; empty until first used (see outline()).
+    mutable std::vector<std::array<QPolygonF, kOutlineLevels>> outlines_;
+    std::vector<QPolygonF> voidPolygons_;          ///< world coordinates
+    std::vector<std::array<double, 4>> voidBoxes_; ///< min1, max1, min2, max2
+    /// The void cells' outline edges, each once [m] (built on first use).
+    const std::vector<std::array<double, 4>>& voidEdges() const;
+    mutable std::vector<std::array<double, 4>> voidEdges_;
+    mutable bool voidEdgesReady_ = false;
     double meanVoidArea_ = 0;
     std::array<double, 18> roseCounts_{}; ///< contact normals in 10 degree bins
 };
