@@ -125,7 +125,9 @@ TEST(GuiBench, RunsOffscreenAndPrintsEveryFigure) {
          {"platform offscreen", "(a) engine speed, headless and in the live window", "\"tiny\"",
           "120 grains", "400 steps per run", "round 1: headless", "engine steps/s headless:",
           "live window: scene drawn with QPainter:", "slowdown", "kept for chart hover",
+          "measured by the snapshot thread in", "of the engine thread's time",
           "(b) scene frame time: 150 ovals", "QPainter renderer (raster image): whole cell",
+          "QPainter renderer, the window's default options",
           "OpenGL view: skipped: the offscreen platform has no OpenGL"}) {
         EXPECT_NE(out.find(expected), std::string::npos) << expected << " in\n" << out;
     }
