@@ -12,8 +12,9 @@
 namespace grainlab::ui {
 namespace {
 
-/// The kept snapshots may cost the engine at most about this share of its time (the published
-/// ones about 5 %): measured over at least kCostSamples kept snapshots, a larger share thins
+/// Copying the kept snapshots may cost the engine at most about this share of its time (the
+/// published ones at most 2 % too; the measures of both are computed on the controller's
+/// snapshot thread): measured over at least kCostSamples kept snapshots, a larger share thins
 /// the history (every other record from then on) and the count starts again.
 constexpr double kHistoryShare = 0.02;
 constexpr int kCostSamples = 8;

@@ -35,8 +35,9 @@
 namespace grainlab::ui {
 namespace {
 
-/// GUI refresh period: 30 frames per second. Each new scene costs the worker a snapshot and the
-/// GUI thread a redraw, both taken from the engine's processor time, so no faster than needed.
+/// GUI refresh period: 30 frames per second. Each new scene costs the worker a copy, the snapshot
+/// thread its measures and the GUI thread a redraw, all taken from the processor the engine
+/// shares, so no faster than needed.
 constexpr int kFrameMs = 33;
 constexpr int kChartPeriodMs = 150; ///< charts are replotted at most this often while running
 

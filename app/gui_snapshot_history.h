@@ -4,8 +4,8 @@
 // budget (default 256 MB) and a count (default 2000 snapshots): when either is exceeded, every
 // other kept snapshot is dropped and from then on only every other record is kept (the stride
 // doubles), so the kept moments stay evenly spread over the whole run however long it is. The
-// run thins the same way when building the kept snapshots costs the engine more than ~2 % of
-// its time (gui_experiment_run.cpp).
+// run thins the same way when copying the kept snapshots costs the engine more than ~2 % of its
+// time (gui_experiment_run.cpp).
 //
 // Threads: the run adds snapshots on the controller's worker thread (SteppedRun::
 // keepRecordSnapshots); the GUI thread looks them up. Every member function locks the history's
