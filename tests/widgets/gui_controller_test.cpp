@@ -33,12 +33,7 @@ public:
         return steps_ < total_;
     }
     std::shared_ptr<Snapshot> snapshot() const override {
-        auto s = scene_ ? std::make_shared<Snapshot>(*scene_) : std::make_shared<Snapshot>();
-        if (scene_) {
-            s->measured = false;
-            s->loadBearing.clear();
-            s->voidCells.clear();
-        }
+        auto s = scene_ ? testing::unmeasuredCopy(*scene_) : std::make_shared<Snapshot>();
         s->step = steps_;
         s->axialStrain = 1e-6 * double(steps_);
         return s;

@@ -88,12 +88,9 @@ TEST(SnapshotHistory, NearestOfTheTestOrElseOfTheNewestTest) {
     EXPECT_DOUBLE_EQ(b->axialStrain, 1e-4 * 4);
 }
 
-/// `complete` without its measures, as the live run builds the pictures it keeps.
+/// `complete` without its measures, as the live run builds the pictures it keeps, at `step`.
 std::shared_ptr<Snapshot> unmeasuredCopy(const Snapshot& complete, std::int64_t step) {
-    auto s = std::make_shared<Snapshot>(complete);
-    s->measured = false;
-    s->loadBearing.clear();
-    s->voidCells.clear();
+    auto s = testing::unmeasuredCopy(complete);
     s->step = step;
     s->axialStrain = 1e-4 * double(step);
     return s;

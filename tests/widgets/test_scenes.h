@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 
 #include "grainlab/assembly.h"
 #include "grainlab/simulation.h"
@@ -40,6 +41,16 @@ inline SnapshotPtr makeCompactedSnapshot(int grains = 150, std::int64_t steps = 
     fillSnapshotScene(*s, sim, initial.grains.theta);
     s->stage = "compaction 100 kPa";
     s->test = "compaction";
+    return s;
+}
+
+/// A copy of `complete` without its measures (void cells, load-bearing flags), as the live run
+/// builds its pictures for the controller's snapshot thread to complete.
+inline std::shared_ptr<Snapshot> unmeasuredCopy(const Snapshot& complete) {
+    auto s = std::make_shared<Snapshot>(complete);
+    s->measured = false;
+    s->loadBearing.clear();
+    s->voidCells.clear();
     return s;
 }
 
