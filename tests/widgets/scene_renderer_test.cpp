@@ -157,6 +157,46 @@ TEST(SceneRenderer, VoidCellsAndForceChainsShowTheirColours) {
     }
 }
 
+TEST(SceneRenderer, VoidCellFillsFollowTheOptionsFromFrameToFrame) {
+    // The fills' colours and drawing order are kept from frame to frame (built once per shading):
+    // on one renderer, switching the shading or the selected cell repaints every cell in its new
+    // colour, and the selected cell is not filled twice.
+    const QSize size(700, 700);
+    SceneRenderer r = plainRenderer(size);
+    const QImage below = render(r, size);
+    const auto points = testing::voidCellCentroids(r, size);
+    ASSERT_FALSE(points.empty());
+    const int selected = points.front().cell;
+    std::vector<QRgb> valenceColours;
+    for (VoidCellShading shading :
+         {VoidCellShading::Valence, VoidCellShading::Area, VoidCellShading::Valence}) {
+        r.options().voidCells = shading;
+        r.options().selectedVoidCell = shading == VoidCellShading::Area ? selected : -1;
+        const QImage shaded = render(r, size);
+        int changed = 0;
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const auto& [cell, pixel] = points[k];
+            const QColor fill = r.voidCellColour(cell);
+            if (valenceColours.size() < points.size()) {
+                valenceColours.push_back(fill.rgba());
+            }
+            changed += fill.rgba() != valenceColours[k];
+            if (cell == selected && shading == VoidCellShading::Area) {
+                EXPECT_EQ(fill.alpha(), 200);
+            }
+            EXPECT_TRUE(
+                sameColour(shaded.pixel(pixel), testing::blended(fill, below.pixel(pixel)), 3))
+                << "shading " << int(shading) << " void cell " << cell << " at " << pixel.x() << ","
+                << pixel.y();
+        }
+        if (shading == VoidCellShading::Area) {
+            EXPECT_GT(changed, int(points.size()) / 4) << "the shadings give the same colours";
+        } else {
+            EXPECT_EQ(changed, 0);
+        }
+    }
+}
+
 TEST(SceneRenderer, WideGrainsKeepTheirOutlineAndADarkerEdge) {
     // Fills are aliased and outlines have as few vertices as stay within a quarter of a pixel of
     // the true outline: 3 pixels inside the true outline, every grain still shows its own fill;

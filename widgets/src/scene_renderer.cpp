@@ -73,6 +73,11 @@ void SceneRenderer::setSnapshot(SnapshotPtr snapshot) {
     voidBoxes_.clear();
     voidEdges_.clear();
     voidEdgesReady_ = false;
+    chainLines_.clear();
+    chainLinesFrom_ = 0;
+    voidFills_.clear();
+    voidFillPoints_.clear();
+    voidFillsShading_ = VoidCellShading::Off;
     roseCounts_.fill(0.0);
     maxForce_ = strongThreshold_ = meanVoidArea_ = 0.0;
     if (!snapshot_) {
@@ -122,6 +127,7 @@ void SceneRenderer::setSnapshot(SnapshotPtr snapshot) {
     }
     std::sort(forceOrder_.begin(), forceOrder_.end(),
               [this](int a, int b) { return forceMagnitude_[a] < forceMagnitude_[b]; });
+    chainLinesFrom_ = static_cast<std::int32_t>(forceOrder_.size()); // none gathered yet
     // Force bins: runs of forceOrder_ with one pen each, split at the strong threshold so that
     // "strong" draws exactly the contacts above it. The key grows with the force.
     chainBins_.clear();
@@ -214,6 +220,10 @@ QColor SceneRenderer::grainColour(int g) const {
 }
 
 QColor SceneRenderer::voidCellColour(int v) const {
+    return voidCellShade(v, v == options_.selectedVoidCell ? 200 : kVoidCellAlpha);
+}
+
+QColor SceneRenderer::voidCellShade(int v, int alpha) const {
     const VoidCellView& cell = snapshot_->voidCells[v];
     double t = 0.0;
     if (options_.voidCells == VoidCellShading::Area && meanVoidArea_ > 0.0) {
@@ -226,7 +236,7 @@ QColor SceneRenderer::voidCellColour(int v) const {
         t = std::clamp((cell.valence - 3) / 7.0, 0.0, 1.0);
     }
     QColor fill = sequentialColour(t);
-    fill.setAlpha(v == options_.selectedVoidCell ? 200 : 120);
+    fill.setAlpha(alpha);
     return fill;
 }
 

@@ -20,7 +20,9 @@
 // smooth shape per grain); outlines have the fewest vertices that keep them within an eighth of
 // a pixel of the true outline; pens and brushes change once per colour (items sorted by colour,
 // force chains in 64 bins); translucent void cells are filled in bands of at most 64 pixel rows
-// and outlined once per shared edge in pieces of at most 32 pixels.
+// and outlined once per shared edge in pieces of at most 32 pixels. What a frame reads in drawing
+// order (fills by colour, force chains by force) is gathered once per snapshot into arrays read
+// in sequence.
 //
 // The implementation is split by what is drawn: scene_renderer.cpp (derived data, colours, hit
 // tests, the order of the layers), scene_renderer_grains.cpp, scene_renderer_overlays.cpp (void
@@ -148,7 +150,8 @@ public:
     bool grainContains(int grain, double c1, double c2, double x1, double x2) const;
 
 private:
-    static constexpr int kOutlineLevels = 9; ///< detail levels of the grain outlines
+    static constexpr int kOutlineLevels = 9;   ///< detail levels of the grain outlines
+    static constexpr int kVoidCellAlpha = 120; ///< of void-cell fills; the selected one's is 200
 
     /// Image shifts (i, j) at which grain `g` is drawn: (0, 0) first.
     int grainImages(int g, std::array<std::array<int, 2>, 9>& shifts) const;
@@ -184,6 +187,20 @@ private:
         bool strong;             ///< every contact of the bin is above the threshold
     };
     std::vector<ChainBin> chainBins_;
+    /// One contact as a force-chain line, in the order of forceOrder_.
+    struct ChainLine {
+        double a1, a2;           ///< centre of grain A [m]
+        double branch1, branch2; ///< from A to B's image [m]
+        double length;           ///< |branch| [m]
+        double b1, b2;           ///< centre of grain B [m]
+        bool crossesBorder;      ///< B's image is not B: also drawn from B's side
+    };
+    /// The force-chain lines gathered from the contacts in drawing order, so that a frame reads
+    /// them in sequence instead of jumping through the contacts and grains: valid from position
+    /// `from` of forceOrder_ on (built on first use).
+    const std::vector<ChainLine>& chainLines(std::int32_t from) const;
+    mutable std::vector<ChainLine> chainLines_;
+    mutable std::int32_t chainLinesFrom_ = 0; ///< chainLines_ is valid from here on
     double maxForce_ = 0, strongThreshold_ = 0;
     double minDiameter_ = 0, maxDiameter_ = 0, maxHalfWidth_ = 0;
     /// Per shape, body frame, by detail level; empty until first used (see outline()).
@@ -194,6 +211,22 @@ private:
     const std::vector<std::array<double, 4>>& voidEdges() const;
     mutable std::vector<std::array<double, 4>> voidEdges_;
     mutable bool voidEdgesReady_ = false;
+    /// One void cell's fill: its colour (alpha kVoidCellAlpha) and its polygon, a range of
+    /// voidFillPoints_.
+    struct VoidFill {
+        QRgb colour;
+        std::int32_t cell;
+        std::int32_t begin, end;
+    };
+    /// The void-cell fills of the current shading sorted by colour (then cell), their polygons
+    /// copied into one array in that order, so that a frame neither computes colours nor sorts
+    /// (built on first use and when the shading changes).
+    const std::vector<VoidFill>& voidFills() const;
+    /// The fill colour of void cell `v` in the current shading, with alpha `alpha`.
+    QColor voidCellShade(int v, int alpha) const;
+    mutable std::vector<VoidFill> voidFills_;
+    mutable std::vector<QPointF> voidFillPoints_;
+    mutable VoidCellShading voidFillsShading_ = VoidCellShading::Off; ///< Off: not built
     double meanVoidArea_ = 0;
     std::array<double, 18> roseCounts_{}; ///< contact normals in 10 degree bins
 };
