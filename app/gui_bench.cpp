@@ -204,7 +204,7 @@ struct WindowResult {
     double picturesPerSecond = 0; ///< new snapshots shown in the scene
     double engineCpuShare = 0;    ///< CPU time of the engine thread / wall time
     double guiCpuShare = 0;       ///< CPU time of the GUI thread / wall time
-    double snapshotMs = 0;        ///< the engine thread's time to copy the last snapshot
+    double snapshotMs = 0;        ///< the engine thread's mean time on a running picture
     double publishingShare = 0;   ///< the engine thread's time on snapshots / wall time
     double measureMs = 0;         ///< the finisher's time on the last snapshot's measures
     std::uint64_t publications = 0;
@@ -256,7 +256,9 @@ WindowResult windowStepsPerSecond(const ExperimentConfig& config, const ResumePo
     r.picturesPerSecond = pictures / timing->seconds;
     r.engineCpuShare = timing->cpuSeconds / timing->seconds;
     r.guiCpuShare = guiCpu / timing->seconds;
-    r.snapshotMs = 1e3 * status.snapshotSeconds;
+    r.snapshotMs = status.runningPublications > 0
+                       ? 1e3 * status.publishingSeconds / double(status.runningPublications)
+                       : 0.0;
     r.publishingShare = status.publishingSeconds / timing->seconds;
     r.measureMs = 1e3 * status.measureSeconds;
     r.publications = status.publications;
@@ -331,8 +333,8 @@ void benchWindow(const BenchOptions& o, int threads) {
                    "rounds; target <= 10 %)\n",
                    v.name, v.last.openGL ? "OpenGL" : "QPainter", median(v.stepsPerSecond),
                    100.0 * median(v.slowdown));
-        fmt::print("      {:.1f} new pictures/s, {} snapshots published (the last copied by the "
-                   "engine thread in {:.2f} ms, measured by the snapshot thread in {:.2f} ms; "
+        fmt::print("      {:.1f} new pictures/s, {} snapshots published (copied by the engine thread "
+                   "in {:.2f} ms on average, the last measured by the snapshot thread in {:.2f} ms; "
                    "copies took {:.1f} % of the engine thread's time),\n      {} kept for chart "
                    "hover ({:.1f} MB); on the processor: engine thread {:.0f} %, GUI thread "
                    "{:.0f} % of the time\n",
@@ -489,6 +491,14 @@ void benchScene(const BenchOptions& o, int threads) {
                "frames/s)\n",
                grainsOnly.wholeMs, 1e3 / grainsOnly.wholeMs, grainsOnly.zoomedMs,
                1e3 / grainsOnly.zoomedMs);
+    ui::SceneOptions voidsOnly, chainsOnly;
+    voidsOnly.voidCells = options.voidCells;
+    chainsOnly.forceChains = options.forceChains;
+    const FrameTimes withVoids = painterFrameTimes(s, voidsOnly, &prepareMs);
+    const FrameTimes withChains = painterFrameTimes(s, chainsOnly, &prepareMs);
+    fmt::print("    QPainter renderer, one overlay over the grains, whole cell: void cells {:.1f} "
+               "ms, strong force chains {:.1f} ms\n",
+               withVoids.wholeMs, withChains.wholeMs);
     std::fflush(stdout);
     const GlFrameTimes gl = openGLFrameTimes(s, options);
     if (!gl.failure.isEmpty()) {

@@ -105,6 +105,7 @@ bool SimulationController::ensureRun() {
         factory = factory_;
         status_.stepsDone = 0;
         status_.publishingSeconds = 0.0;
+        status_.runningPublications = 0;
         status_.stepsPerSecond = status_.strainPerSecond = 0.0;
         status_.etaSeconds = -1.0;
     }
@@ -141,8 +142,11 @@ void SimulationController::publish(RunState state) {
         }
         status_.progress = progress;
         status_.snapshotSeconds = now - start;
-        status_.publishingSeconds += now - start;
         ++status_.publications;
+        if (state == RunState::Running) {
+            status_.publishingSeconds += now - start;
+            ++status_.runningPublications;
+        }
         // Rates over the interval since the previous publication, smoothed.
         const double dt = now - lastRateTime_;
         if (dt > 0.05 && state == RunState::Running) {

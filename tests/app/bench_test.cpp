@@ -128,6 +128,7 @@ TEST(GuiBench, RunsOffscreenAndPrintsEveryFigure) {
           "measured by the snapshot thread in", "of the engine thread's time",
           "(b) scene frame time: 150 ovals", "QPainter renderer (raster image): whole cell",
           "QPainter renderer, the window's default options",
+          "one overlay over the grains, whole cell: void cells",
           "OpenGL view: skipped: the offscreen platform has no OpenGL"}) {
         EXPECT_NE(out.find(expected), std::string::npos) << expected << " in\n" << out;
     }
