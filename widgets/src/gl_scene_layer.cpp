@@ -460,10 +460,7 @@ void GlSceneLayer::drawGrains() {
             d.sideRadius = float(s.sideRadius);
             d.junctionX = float(s.halfWidth - s.endRadius + s.endRadius * s.cosJunction);
         }
-        d.rgba[0] = std::uint8_t(qRed(g.colour));
-        d.rgba[1] = std::uint8_t(qGreen(g.colour));
-        d.rgba[2] = std::uint8_t(qBlue(g.colour));
-        d.rgba[3] = std::uint8_t(qAlpha(g.colour));
+        toBytes(g.colour, d.rgba);
     }
     program_.bind();
     setView(program_);
