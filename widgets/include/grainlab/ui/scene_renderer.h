@@ -47,7 +47,8 @@ namespace grainlab::ui {
 
 enum class GrainColouring {
     Size,         ///< equivalent diameter, smallest dark to largest light
-    Rotation,     ///< rotation since the start of the test, clockwise blue, anticlockwise red
+    Rotation,     ///< rotation since the start of the test: positive (x1 towards x2, clockwise
+                  ///< on screen, where x1 points up) red, negative blue
     Coordination, ///< number of contacts, 0 to 8+
     LoadBearing,  ///< load-bearing graph vs rattlers
     Uniform,      ///< one colour
