@@ -1,0 +1,59 @@
+#pragma once
+// The numbers a researcher compares between runs of a biaxial test, taken from one test's
+// recorded series (a SeriesTable with the columns of docs/measures.md): the peak of q/p, values
+// at fixed axial strains, the servo's worst lateral-stress error, the mean unbalanced force and
+// the share of the boundary work that damping took. Plain computation over recorded rows, no
+// simulation needed: used by the many-run commands, the window and the tests on any thread.
+//
+// Only the rows of the shear stage count (the test's series also holds its re-equilibration
+// before shear); the void ratio of the compacted sample is the test's first row.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grainlab/series.h"
+#include "grainlab/statistics.h"
+
+namespace grainlab {
+
+/// Axial strains at which values are reported [-] (2, 5 and 10 %).
+inline constexpr double kMetricStrains[] = {0.02, 0.05, 0.10};
+
+struct ShearMetrics {
+    std::optional<double> peakStressRatio;       ///< largest q/p during shear [-]
+    std::optional<double> peakAxialStrain;       ///< eps1 at that peak [-]
+    std::optional<double> peakFrictionAngle;     ///< phi at that peak [deg]
+    std::optional<double> stressRatioAt[3];      ///< q/p at eps1 = kMetricStrains [-]
+    std::optional<double> volumetricStrainAt[3]; ///< eps_v at eps1 = kMetricStrains [-]
+    std::optional<double> maxDilatancy;          ///< largest dilatancy index -d eps_v/d eps1 [-]
+    std::optional<double> voidRatioAtStart;      ///< e of the compacted sample (first row) [-]
+    std::optional<double> coordinationAt10;      ///< Z at eps1 = 10 % [-]
+    std::optional<double> effectiveCoordinationAt10; ///< Z_eff at eps1 = 10 % [-]
+    std::optional<double> voidCountRatioAt10;        ///< N_v/N_vi at eps1 = 10 % [-]
+    std::optional<double> fabricAt10;                ///< H11 - H22 at eps1 = 10 % [-]
+    std::optional<double> maxLateralStressError;     ///< max |sigma22 - p0| / p0 during shear [-]
+    std::optional<double> meanUnbalancedForce;       ///< mean I_uf over the shear records [%]
+    /// Work dissipated by damping during shear as a fraction of the boundary work, the latter
+    /// taken from the energy balance: W_b = dE_kin + dE_elastic + dW_friction + dW_damping [-].
+    std::optional<double> dampingWorkFraction;
+};
+
+/// The metrics of one test recorded at confining pressure `confiningPressure` [Pa]. Values the
+/// test does not reach (it was sheared less far, or has no shear rows) are left empty.
+ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure);
+
+/// A column of the shear rows as a curve against eps1 (e.g. "q_over_p", "epsv").
+Curve shearCurve(const SeriesTable& test, const std::string& column);
+
+/// One metric with its name and unit, as written in CSV headers ("name [unit]").
+struct NamedMetric {
+    std::string name; ///< e.g. "peak_q_over_p"
+    std::string unit; ///< e.g. "-", "deg", "%"
+    std::optional<double> value;
+};
+
+/// Every metric of `m` with its column name and unit, in a fixed order.
+std::vector<NamedMetric> namedMetrics(const ShearMetrics& m);
+
+} // namespace grainlab

@@ -1,0 +1,145 @@
+#include "grainlab/shear_metrics.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace grainlab {
+namespace {
+
+/// Rows of the shear stage (the runner names them "shear <pressure>").
+std::vector<std::size_t> shearRows(const SeriesTable& t) {
+    std::vector<std::size_t> rows;
+    for (std::size_t k = 0; k < t.rows.size() && k < t.stages.size(); ++k) {
+        if (t.stages[k].rfind("shear", 0) == 0) {
+            rows.push_back(k);
+        }
+    }
+    return rows;
+}
+
+/// Column `name` at row k, or nothing when the table has no such column.
+std::optional<double> cell(const SeriesTable& t, int column, std::size_t k) {
+    if (column < 0) {
+        return std::nullopt;
+    }
+    return t.rows[k][std::size_t(column)];
+}
+
+} // namespace
+
+Curve shearCurve(const SeriesTable& test, const std::string& column) {
+    Curve c;
+    const int e = test.column("eps1");
+    const int y = test.column(column);
+    if (e < 0 || y < 0) {
+        return c;
+    }
+    for (std::size_t k : shearRows(test)) {
+        c.x.push_back(test.rows[k][std::size_t(e)]);
+        c.y.push_back(test.rows[k][std::size_t(y)]);
+    }
+    return c;
+}
+
+ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
+    ShearMetrics m;
+    if (!test.rows.empty()) {
+        m.voidRatioAtStart = cell(test, test.column("e"), 0);
+    }
+    const std::vector<std::size_t> rows = shearRows(test);
+    if (rows.empty()) {
+        return m;
+    }
+
+    const int ratio = test.column("q_over_p"), eps1 = test.column("eps1");
+    const int phi = test.column("phi_deg"), di = test.column("DI");
+    const int s22 = test.column("sigma22"), iuf = test.column("I_uf");
+    if (ratio >= 0 && eps1 >= 0) {
+        std::size_t peak = rows.front();
+        for (std::size_t k : rows) {
+            if (test.rows[k][std::size_t(ratio)] > test.rows[peak][std::size_t(ratio)]) {
+                peak = k;
+            }
+        }
+        m.peakStressRatio = cell(test, ratio, peak);
+        m.peakAxialStrain = cell(test, eps1, peak);
+        m.peakFrictionAngle = cell(test, phi, peak);
+    }
+    const Curve q = shearCurve(test, "q_over_p"), ev = shearCurve(test, "epsv");
+    for (int s = 0; s < 3; ++s) {
+        m.stressRatioAt[s] = valueAt(q, kMetricStrains[s]);
+        m.volumetricStrainAt[s] = valueAt(ev, kMetricStrains[s]);
+    }
+    const double at10 = kMetricStrains[2];
+    m.coordinationAt10 = valueAt(shearCurve(test, "Z"), at10);
+    m.effectiveCoordinationAt10 = valueAt(shearCurve(test, "Z_eff"), at10);
+    m.voidCountRatioAt10 = valueAt(shearCurve(test, "Nv_over_Nvi"), at10);
+    m.fabricAt10 = valueAt(shearCurve(test, "Hdev"), at10);
+
+    double maxDi = -INFINITY, maxError = 0, sumIuf = 0;
+    for (std::size_t k : rows) {
+        const auto& r = test.rows[k];
+        if (di >= 0) {
+            maxDi = std::max(maxDi, r[std::size_t(di)]);
+        }
+        if (s22 >= 0 && confiningPressure > 0) {
+            maxError = std::max(maxError, std::abs(r[std::size_t(s22)] - confiningPressure) /
+                                              confiningPressure);
+        }
+        if (iuf >= 0) {
+            sumIuf += r[std::size_t(iuf)];
+        }
+    }
+    if (di >= 0) {
+        m.maxDilatancy = maxDi;
+    }
+    if (s22 >= 0 && confiningPressure > 0) {
+        m.maxLateralStressError = maxError;
+    }
+    if (iuf >= 0) {
+        m.meanUnbalancedForce = sumIuf / double(rows.size());
+    }
+
+    // Energy balance over shear: what the boundary put in went into stored or dissipated energy.
+    const int kin = test.column("E_kin"), el = test.column("E_elastic");
+    const int fr = test.column("W_friction"), dmp = test.column("W_damping");
+    if (kin >= 0 && el >= 0 && fr >= 0 && dmp >= 0 && rows.size() >= 2) {
+        const auto& a = test.rows[rows.front()];
+        const auto& b = test.rows[rows.back()];
+        const auto change = [&](int c) { return b[std::size_t(c)] - a[std::size_t(c)]; };
+        const double damping = change(dmp);
+        const double boundary = change(kin) + change(el) + change(fr) + damping;
+        if (boundary > 0) {
+            m.dampingWorkFraction = damping / boundary;
+        }
+    }
+    return m;
+}
+
+std::vector<NamedMetric> namedMetrics(const ShearMetrics& m) {
+    std::vector<NamedMetric> out{
+        {"peak_q_over_p", "-", m.peakStressRatio},
+        {"eps1_at_peak", "-", m.peakAxialStrain},
+        {"phi_at_peak", "deg", m.peakFrictionAngle},
+    };
+    for (int s = 0; s < 3; ++s) {
+        const int percent = int(std::lround(100 * kMetricStrains[s]));
+        out.push_back({fmt::format("q_over_p_at_{}pc", percent), "-", m.stressRatioAt[s]});
+    }
+    for (int s = 0; s < 3; ++s) {
+        const int percent = int(std::lround(100 * kMetricStrains[s]));
+        out.push_back({fmt::format("epsv_at_{}pc", percent), "-", m.volumetricStrainAt[s]});
+    }
+    out.push_back({"DI_max", "-", m.maxDilatancy});
+    out.push_back({"e_compacted", "-", m.voidRatioAtStart});
+    out.push_back({"Z_at_10pc", "-", m.coordinationAt10});
+    out.push_back({"Z_eff_at_10pc", "-", m.effectiveCoordinationAt10});
+    out.push_back({"Nv_over_Nvi_at_10pc", "-", m.voidCountRatioAt10});
+    out.push_back({"Hdev_at_10pc", "-", m.fabricAt10});
+    out.push_back({"lateral_stress_error_max", "-", m.maxLateralStressError});
+    out.push_back({"I_uf_mean", "%", m.meanUnbalancedForce});
+    out.push_back({"damping_work_fraction", "-", m.dampingWorkFraction});
+    return out;
+}
+
+} // namespace grainlab

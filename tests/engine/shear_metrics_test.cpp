@@ -1,0 +1,122 @@
+// The metrics of one shear test against a hand-built series whose answers are known: the
+// re-equilibration rows before shear must not count, values at fixed strains interpolate, the
+// damping share follows from the energy balance.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "grainlab/measures.h"
+#include "grainlab/shear_metrics.h"
+
+namespace grainlab {
+namespace {
+
+/// A test series with every recorded column; rows built by `set`.
+struct SeriesBuilder {
+    SeriesTable t;
+    SeriesBuilder() {
+        t.test = "p100kPa";
+        for (const SeriesColumn& c : seriesColumns()) {
+            if (!c.text) {
+                t.columns.push_back(c);
+            }
+        }
+    }
+    std::vector<double>& row(const std::string& stage) {
+        t.rows.emplace_back(t.columns.size(), 0.0);
+        t.stages.push_back(stage);
+        return t.rows.back();
+    }
+    double& at(std::vector<double>& r, const char* name) { return r[std::size_t(t.column(name))]; }
+};
+
+SeriesTable syntheticTest() {
+    SeriesBuilder b;
+    // Re-equilibration: a huge q/p and I_uf that must be ignored.
+    auto& eq = b.row("equilibration 100 kPa");
+    b.at(eq, "q_over_p") = 5;
+    b.at(eq, "I_uf") = 99;
+    b.at(eq, "e") = 0.2;
+    b.at(eq, "sigma22") = 5e5;
+    // Shear: eps1 = 0, 0.01, ..., 0.12; q/p rises linearly to 0.5 at 3 % then falls by 0.01 per
+    // 1 %; eps_v = -eps1 / 2; sigma22 off its target by 0.2 % at most (at 7 %).
+    for (int k = 0; k <= 12; ++k) {
+        auto& r = b.row("shear 100 kPa");
+        const double e = 0.01 * k;
+        b.at(r, "eps1") = e;
+        b.at(r, "q_over_p") = k <= 3 ? 0.5 * e / 0.03 : 0.5 - (e - 0.03);
+        b.at(r, "phi_deg") = 10 + k;
+        b.at(r, "epsv") = -e / 2;
+        b.at(r, "DI") = k == 4 ? 0.7 : 0.5;
+        b.at(r, "sigma22") = 1e5 * (1 + (k == 7 ? -0.002 : 0.001));
+        b.at(r, "I_uf") = k; // mean over 13 rows: 6
+        b.at(r, "Z") = 4 - e;
+        b.at(r, "Z_eff") = 4.5 - e;
+        b.at(r, "Nv_over_Nvi") = 1 - e;
+        b.at(r, "Hdev") = e;
+        b.at(r, "e") = 0.2 + e;
+        // Energy: elastic +1 J, friction +2 J, damping +1 J over shear; kinetic unchanged.
+        b.at(r, "E_kin") = 0.5;
+        b.at(r, "E_elastic") = 3 + k / 12.0;
+        b.at(r, "W_friction") = 10 + 2 * k / 12.0;
+        b.at(r, "W_damping") = 7 + k / 12.0;
+    }
+    return b.t;
+}
+
+TEST(ShearMetrics, PeakAndValuesAtFixedStrainsOfAKnownCurve) {
+    const ShearMetrics m = shearMetrics(syntheticTest(), 1e5);
+    EXPECT_DOUBLE_EQ(*m.peakStressRatio, 0.5); // the equilibration row's 5 is not shear
+    EXPECT_DOUBLE_EQ(*m.peakAxialStrain, 0.03);
+    EXPECT_DOUBLE_EQ(*m.peakFrictionAngle, 13);
+    EXPECT_NEAR(*m.stressRatioAt[0], 0.5 * 0.02 / 0.03, 1e-14);
+    EXPECT_NEAR(*m.stressRatioAt[1], 0.48, 1e-14);
+    EXPECT_NEAR(*m.stressRatioAt[2], 0.43, 1e-14);
+    EXPECT_NEAR(*m.volumetricStrainAt[1], -0.025, 1e-15);
+    EXPECT_DOUBLE_EQ(*m.maxDilatancy, 0.7);
+    EXPECT_DOUBLE_EQ(*m.voidRatioAtStart, 0.2);
+    EXPECT_NEAR(*m.coordinationAt10, 3.9, 1e-14);
+    EXPECT_NEAR(*m.effectiveCoordinationAt10, 4.4, 1e-14);
+    EXPECT_NEAR(*m.voidCountRatioAt10, 0.9, 1e-14);
+    EXPECT_NEAR(*m.fabricAt10, 0.1, 1e-14);
+    EXPECT_NEAR(*m.maxLateralStressError, 0.002, 1e-12);
+    EXPECT_DOUBLE_EQ(*m.meanUnbalancedForce, 6);
+    EXPECT_NEAR(*m.dampingWorkFraction, 0.25, 1e-14); // 1 J of the 4 J the boundary put in
+}
+
+TEST(ShearMetrics, StrainsNotReachedAndMissingShearAreLeftEmpty) {
+    SeriesTable t = syntheticTest();
+    // Cut the test at eps1 = 4 %: the 5 % and 10 % values are not known.
+    t.rows.resize(6);
+    t.stages.resize(6);
+    const ShearMetrics m = shearMetrics(t, 1e5);
+    EXPECT_TRUE(m.stressRatioAt[0]);
+    EXPECT_FALSE(m.stressRatioAt[1]);
+    EXPECT_FALSE(m.stressRatioAt[2]);
+    EXPECT_FALSE(m.coordinationAt10);
+    // Only the re-equilibration: no shear metrics at all, but the compacted sample's e.
+    t.rows.resize(1);
+    t.stages.resize(1);
+    const ShearMetrics none = shearMetrics(t, 1e5);
+    EXPECT_FALSE(none.peakStressRatio);
+    EXPECT_FALSE(none.meanUnbalancedForce);
+    EXPECT_DOUBLE_EQ(*none.voidRatioAtStart, 0.2);
+}
+
+TEST(ShearMetrics, NamedMetricsCarryEveryValueWithItsUnit) {
+    const ShearMetrics m = shearMetrics(syntheticTest(), 1e5);
+    const auto named = namedMetrics(m);
+    ASSERT_EQ(named.size(), 18u);
+    EXPECT_EQ(named[0].name, "peak_q_over_p");
+    EXPECT_DOUBLE_EQ(*named[0].value, 0.5);
+    EXPECT_EQ(named[4].name, "q_over_p_at_5pc");
+    EXPECT_NEAR(*named[4].value, 0.48, 1e-14);
+    EXPECT_EQ(named[16].name, "I_uf_mean");
+    EXPECT_EQ(named[16].unit, "%");
+    for (const auto& n : named) {
+        EXPECT_TRUE(n.value) << n.name;
+    }
+}
+
+} // namespace
+} // namespace grainlab
