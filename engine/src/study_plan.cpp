@@ -1,0 +1,279 @@
+#include "grainlab/study_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "grainlab/experiment_file.h"
+#include "grainlab/oval_shape.h"
+#include "grainlab/simulation.h"
+
+namespace grainlab {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct KnobInfo {
+    KnobKind kind;
+    const char* name;
+};
+
+constexpr KnobInfo kKnobs[] = {
+    {KnobKind::TimeStepFraction, "time_step_fraction"},
+    {KnobKind::AxialStrainPerStep, "axial_strain_per_step"},
+    {KnobKind::InertialNumber, "inertial_number"},
+    {KnobKind::Damping, "damping"},
+    {KnobKind::GrainCount, "grain_count"},
+    {KnobKind::Shape, "shape"},
+    {KnobKind::NeighbourSkin, "neighbour_skin"},
+    {KnobKind::Threads, "threads"},
+};
+
+/// A label safe in folder names: letters, digits, '.', '-' and '_' only.
+std::string folderSafe(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                        (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '_';
+        out += ok ? c : '_';
+    }
+    return out;
+}
+
+std::vector<OvalShape> shapesOf(const ExperimentConfig& c) {
+    std::vector<OvalShape> shapes;
+    for (double w : c.assembly.widths) {
+        shapes.push_back(
+            makeOval(w, c.assembly.aspectRatio, c.assembly.closure, c.assembly.endRadiusRatio));
+    }
+    return shapes;
+}
+
+/// Mean equivalent diameter over the grains (grain i has size class i mod classes) [m].
+double meanDiameter(const ExperimentConfig& c) {
+    const std::vector<OvalShape> shapes = shapesOf(c);
+    const int n = c.assembly.grainCount, classes = static_cast<int>(shapes.size());
+    double sum = 0;
+    for (int k = 0; k < classes; ++k) {
+        const int count = n / classes + (k < n % classes ? 1 : 0);
+        sum += count * shapes[std::size_t(k)].equivalentDiameter();
+    }
+    return sum / n;
+}
+
+Json& child(Json& j, const char* key) {
+    if (!j.contains(key) || !j[key].is_object()) {
+        j[key] = Json::object();
+    }
+    return j[key];
+}
+
+} // namespace
+
+std::string knobName(KnobKind kind) {
+    for (const KnobInfo& k : kKnobs) {
+        if (k.kind == kind) {
+            return k.name;
+        }
+    }
+    return "?";
+}
+
+std::optional<KnobKind> knobNamed(const std::string& name) {
+    for (const KnobInfo& k : kKnobs) {
+        if (name == k.name) {
+            return k.kind;
+        }
+    }
+    return std::nullopt;
+}
+
+const std::vector<KnobKind>& allKnobs() {
+    static const std::vector<KnobKind> all = [] {
+        std::vector<KnobKind> v;
+        for (const KnobInfo& k : kKnobs) {
+            v.push_back(k.kind);
+        }
+        return v;
+    }();
+    return all;
+}
+
+std::string KnobLevel::label() const {
+    if (object.empty()) {
+        return fmt::format("{}", number);
+    }
+    const Json j = Json::parse(object);
+    if (j.contains("kind")) { // damping
+        const std::string kind = j["kind"];
+        return j.contains("coefficient") ? fmt::format("{}-{}", kind, j["coefficient"].dump())
+                                         : kind;
+    }
+    if (j.contains("aspect_ratio") && j["aspect_ratio"] == 1) {
+        return "disk";
+    }
+    std::string s = "oval";
+    for (const auto& [key, value] : j.items()) {
+        s += '-';
+        s += value.is_string() ? value.get<std::string>() : value.dump();
+    }
+    return s;
+}
+
+std::string applySetting(const std::string& baseText, const std::string& baseSource,
+                         const std::map<KnobKind, KnobLevel>& levels, std::uint64_t seed) {
+    Json j = Json::parse(baseText);
+    j["seed"] = seed;
+    for (const auto& [kind, level] : levels) {
+        switch (kind) {
+        case KnobKind::AxialStrainPerStep:
+            child(j, "shear")["axial_strain_per_step"] = level.number;
+            break;
+        case KnobKind::Damping:
+            j["damping"] = Json::parse(level.object);
+            break;
+        case KnobKind::GrainCount:
+            child(j, "grains")["count"] = static_cast<std::int64_t>(std::llround(level.number));
+            break;
+        case KnobKind::Shape: {
+            Json& grains = child(j, "grains");
+            const Json shape = Json::parse(level.object);
+            if (!shape.contains("end_radius_ratio")) {
+                grains.erase("end_radius_ratio");
+            }
+            if (!shape.contains("closure")) {
+                grains.erase("closure");
+            }
+            for (const auto& [key, value] : shape.items()) {
+                grains[key] = value;
+            }
+            break;
+        }
+        case KnobKind::Threads:
+            j["threads"] = static_cast<std::int64_t>(std::llround(level.number));
+            break;
+        case KnobKind::TimeStepFraction:
+        case KnobKind::InertialNumber:
+        case KnobKind::NeighbourSkin:
+            break; // derived from the configuration below
+        }
+    }
+
+    const auto fraction = levels.find(KnobKind::TimeStepFraction);
+    const auto inertial = levels.find(KnobKind::InertialNumber);
+    const auto skin = levels.find(KnobKind::NeighbourSkin);
+    if (fraction != levels.end() || inertial != levels.end() || skin != levels.end()) {
+        // Read the configuration as set so far; a tiny time step passes the stability check
+        // whatever the shapes, and is replaced below.
+        Json probe = j;
+        if (fraction != levels.end()) {
+            probe["time_step"] = 1e-15;
+        }
+        const ExperimentConfig c = parseExperimentText(probe.dump(), baseSource);
+        double dt = c.parameters.timeStep;
+        if (fraction != levels.end()) {
+            dt = fraction->second.number * criticalTimeStep(shapesOf(c), c.parameters).limit;
+            j["time_step"] = dt;
+        }
+        if (inertial != levels.end()) {
+            // At the lowest confining pressure sheared, where the inertial number is largest.
+            const double p = *std::min_element(c.shear.pressures.begin(), c.shear.pressures.end());
+            const double rate =
+                inertial->second.number / (meanDiameter(c) * std::sqrt(c.parameters.density / p));
+            child(j, "shear")["axial_strain_per_step"] = rate * dt;
+        }
+        if (skin != levels.end()) {
+            j["neighbour_skin"] = skin->second.number * c.assembly.widths.front();
+        }
+    }
+    std::string text = j.dump(2) + "\n";
+    parseExperimentText(text, baseSource); // every run's experiment must be valid
+    return text;
+}
+
+StudyPlan planStudy(const StudySpec& spec) {
+    StudyPlan plan;
+    // The reference setting: its levels, then each knob's base value (no level: as the base).
+    StudySetting reference;
+    reference.id = "ref";
+    reference.isReference = true;
+    reference.levels = spec.reference;
+    plan.settings.push_back(reference);
+
+    const auto addSetting = [&](std::map<KnobKind, KnobLevel> levels) {
+        for (const StudySetting& s : plan.settings) {
+            if (s.levels == levels) {
+                return; // already there (e.g. a knob's level equal to the reference)
+            }
+        }
+        StudySetting s;
+        s.levels = std::move(levels);
+        std::string id;
+        for (const auto& [kind, level] : s.levels) {
+            const auto ref = spec.reference.find(kind);
+            if (ref == spec.reference.end() || !(ref->second == level)) {
+                id += id.empty() ? "" : "_";
+                id += knobName(kind);
+                id += '-';
+                id += level.label();
+            }
+        }
+        s.id = folderSafe(id);
+        plan.settings.push_back(std::move(s));
+    };
+
+    if (spec.design == StudyDesign::OneAtATime) {
+        for (const Knob& knob : spec.knobs) {
+            for (const KnobLevel& level : knob.levels) {
+                std::map<KnobKind, KnobLevel> levels = spec.reference;
+                levels[knob.kind] = level;
+                addSetting(std::move(levels));
+            }
+        }
+    } else {
+        std::vector<std::map<KnobKind, KnobLevel>> combinations{spec.reference};
+        for (const Knob& knob : spec.knobs) {
+            std::vector<std::map<KnobKind, KnobLevel>> next;
+            for (const auto& partial : combinations) {
+                for (const KnobLevel& level : knob.levels) {
+                    auto levels = partial;
+                    levels[knob.kind] = level;
+                    next.push_back(std::move(levels));
+                }
+            }
+            combinations = std::move(next);
+        }
+        for (auto& levels : combinations) {
+            addSetting(std::move(levels));
+        }
+    }
+
+    std::set<std::string> ids;
+    for (std::size_t s = 0; s < plan.settings.size(); ++s) {
+        if (!ids.insert(plan.settings[s].id).second) {
+            plan.settings[s].id += fmt::format("-{}", s); // two levels with one label
+        }
+        for (std::uint64_t seed : spec.seeds) {
+            StudyRun run;
+            run.id = fmt::format("{}-seed{}", plan.settings[s].id, seed);
+            run.setting = static_cast<int>(s);
+            run.seed = seed;
+            try {
+                run.experimentText = applySetting(spec.baseExperiment, spec.baseSource,
+                                                  plan.settings[s].levels, seed);
+            } catch (const ExperimentFileError& e) {
+                throw ExperimentFileError(
+                    spec.sourcePath.empty() ? spec.baseSource : spec.sourcePath, e.keyPath,
+                    fmt::format("setting {} makes an invalid experiment: {}", plan.settings[s].id,
+                                e.what()));
+            }
+            plan.runs.push_back(std::move(run));
+        }
+    }
+    return plan;
+}
+
+} // namespace grainlab
