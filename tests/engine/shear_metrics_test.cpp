@@ -5,30 +5,13 @@
 
 #include <gtest/gtest.h>
 
-#include "grainlab/measures.h"
 #include "grainlab/shear_metrics.h"
+#include "series_builder.h"
 
 namespace grainlab {
 namespace {
 
-/// A test series with every recorded column; rows built by `set`.
-struct SeriesBuilder {
-    SeriesTable t;
-    SeriesBuilder() {
-        t.test = "p100kPa";
-        for (const SeriesColumn& c : seriesColumns()) {
-            if (!c.text) {
-                t.columns.push_back(c);
-            }
-        }
-    }
-    std::vector<double>& row(const std::string& stage) {
-        t.rows.emplace_back(t.columns.size(), 0.0);
-        t.stages.push_back(stage);
-        return t.rows.back();
-    }
-    double& at(std::vector<double>& r, const char* name) { return r[std::size_t(t.column(name))]; }
-};
+using test::SeriesBuilder;
 
 SeriesTable syntheticTest() {
     SeriesBuilder b;
