@@ -27,7 +27,7 @@
 #include "grainlab/ui/inspector_panel.h"
 #include "grainlab/ui/parameters_panel.h"
 #include "grainlab/ui/scene_view.h"
-#include "gui_main_window.h"
+#include "gui/main_window.h"
 
 namespace grainlab::ui {
 namespace {

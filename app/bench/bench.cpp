@@ -1,4 +1,4 @@
-#include "bench.h"
+#include "bench/bench.h"
 
 #include <malloc.h>
 
@@ -17,15 +17,10 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "cli/progress_bar.h"
 #include "grainlab/assembly.h"
 #include "grainlab/measures.h"
 #include "grainlab/simulation.h"
-#include "progress_bar.h"
-
-#if defined(GRAINLAB_WITH_GUI) && __has_include("gui_bench.h")
-#define GRAINLAB_HAVE_GUI_BENCH 1
-#include "gui_bench.h"
-#endif
 
 namespace grainlab {
 namespace {
@@ -437,7 +432,7 @@ void addBenchOptions(CLI::App& command, BenchOptions& o) {
         ->capture_default_str();
 }
 
-int runBench(const BenchOptions& o) {
+int runBench(const BenchOptions& o, WindowBench windowBench) {
     std::vector<std::pair<std::string, double>> shapes;
     if (o.shape == "disk" || o.shape == "both") {
         shapes.emplace_back("disk", 1.0);
@@ -460,13 +455,12 @@ int runBench(const BenchOptions& o) {
     }
     const std::vector<int> threadCounts = parseThreads(o.threads);
     if (o.gui) {
-#ifdef GRAINLAB_HAVE_GUI_BENCH
-        return runGuiBench(o);
-#else
-        fmt::print(stderr, "bench: --gui: this grainlab was built without the window "
-                           "(GRAINLAB_BUILD_GUI=OFF)\n");
-        return 2;
-#endif
+        if (windowBench == nullptr) {
+            fmt::print(stderr, "bench: --gui: this grainlab was built without the window "
+                               "(GRAINLAB_BUILD_GUI=OFF)\n");
+            return 2;
+        }
+        return windowBench(o);
     }
     if (o.scaling) {
         return runScaling(o, shapes, threadCounts);

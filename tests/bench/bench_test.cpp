@@ -17,7 +17,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "bench.h"
+#include "bench/bench.h"
 #include "grainlab/simulation.h"
 
 namespace grainlab {
