@@ -48,13 +48,4 @@ using WindowBench = int (*)(const BenchOptions& options);
 
 int runBench(const BenchOptions& options, WindowBench windowBench);
 
-/// Reads a LAMMPS data file of disks (atom_style sphere: id type diameter density x y z ix iy
-/// iz; an orthogonal box) into a state of disks with `parameters`. LAMMPS's y axis becomes the
-/// engine's x1 (the axial direction: in.bench compresses y) and x its x2; positions are taken
-/// relative to (xlo, ylo); grains keep the file's order (LAMMPS writes them spatially sorted).
-/// One shape per distinct diameter. The mass in the file must equal the engine's
-/// density * pi r^2 (in.prep uses `set density/disc`); velocities (Velocities section) are read.
-/// Throws std::runtime_error naming the file, the line and the problem.
-SimulationState readLammpsDisks(const std::string& path, const SimulationParameters& parameters);
-
 } // namespace grainlab
