@@ -6,12 +6,12 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "bench.h"
-#include "run_command.h"
+#include "bench/bench.h"
+#include "cli/run_command.h"
 
-#if defined(GRAINLAB_WITH_GUI) && __has_include("gui_app.h")
-#define GRAINLAB_HAVE_WINDOW 1
-#include "gui_app.h"
+#ifdef GRAINLAB_WITH_GUI
+#include "bench/window_bench.h"
+#include "gui/app.h"
 #endif
 
 namespace grainlab {
@@ -44,7 +44,11 @@ int runCommandLine(int argc, char** argv) {
     }
     try {
         if (*benchCommand) {
-            return runBench(bench);
+#ifdef GRAINLAB_WITH_GUI
+            return runBench(bench, runGuiBench);
+#else
+            return runBench(bench, nullptr);
+#endif
         }
         if (*runCommand) {
             if (run.resume.empty() == run.experiment.empty()) {
@@ -58,7 +62,7 @@ int runCommandLine(int argc, char** argv) {
             }
             return runExperimentCommand(run);
         }
-#ifdef GRAINLAB_HAVE_WINDOW
+#ifdef GRAINLAB_WITH_GUI
         return runGui(argc, argv, experiment);
 #else
         fmt::print("{}", app.help());

@@ -408,21 +408,10 @@ void readShearPressures(const Section& s, const CompactionSpec& compaction, Shea
         shear.pressures = compaction.pressures;
         return;
     }
-    std::string list;
-    for (double p : compaction.pressures) {
-        list += (list.empty() ? "" : ", ") + fmt::format("{}", p);
-    }
-    for (std::size_t i = 0; i < pressures->size(); ++i) {
-        const double p = (*pressures)[i];
-        const std::string key = fmt::format("pressures[{}]", i);
-        if (std::find(compaction.pressures.begin(), compaction.pressures.end(), p) ==
-            compaction.pressures.end()) {
-            s.refuse(key, s.at("pressures")[i],
-                     fmt::format("one of the compaction pressures ({})", list));
-        }
-        if (std::find(pressures->begin(), pressures->begin() + i, p) != pressures->begin() + i) {
-            s.refuse(key, s.at("pressures")[i], "listed once (it appears twice)");
-        }
+    std::size_t bad = 0;
+    if (const std::string allowed = shearPressureRule(compaction.pressures, *pressures, bad);
+        !allowed.empty()) {
+        s.refuse(fmt::format("pressures[{}]", bad), s.at("pressures")[bad], allowed);
     }
     shear.pressures = *pressures;
 }
@@ -657,6 +646,24 @@ ExperimentConfig readExperimentFile(const std::string& path) {
         throw ExperimentFileError(path, "", "read error while reading the experiment file");
     }
     return parseExperimentText(text.str(), path);
+}
+
+std::string shearPressureRule(const std::vector<double>& compaction,
+                              const std::vector<double>& shear, std::size_t& index) {
+    std::string list;
+    for (double p : compaction) {
+        list += (list.empty() ? "" : ", ") + fmt::format("{}", p);
+    }
+    for (index = 0; index < shear.size(); ++index) {
+        const double p = shear[index];
+        if (std::find(compaction.begin(), compaction.end(), p) == compaction.end()) {
+            return fmt::format("one of the compaction pressures ({})", list);
+        }
+        if (std::find(shear.begin(), shear.begin() + index, p) != shear.begin() + index) {
+            return "listed once (it appears twice)";
+        }
+    }
+    return "";
 }
 
 } // namespace grainlab

@@ -1,7 +1,7 @@
 // The OpenGL layer draws the same grains as the QPainter renderer: grain colour at every grain
 // centre, the cell fill far from every grain. Runs where OpenGL 3.3 exists (e.g. under
 // `xvfb-run`); skipped on the offscreen platform, which has none. Its frame time is measured
-// by `grainlab bench --gui` (app/gui_bench.h), not here.
+// by `grainlab bench --gui` (app/bench/window_bench.h), not here.
 #include <cmath>
 
 #include <QDir>

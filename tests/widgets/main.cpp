@@ -1,5 +1,6 @@
-// Widget test main: selects Qt's offscreen platform when there is no display (CI, servers), then
-// runs GoogleTest inside a QApplication so that the tests can drive real widgets with QTest.
+// Test main of widget_tests and gui_tests: selects Qt's offscreen platform when there is no
+// display (CI, servers), then runs GoogleTest inside a QApplication so that the tests can drive
+// real widgets with QTest.
 #include <QApplication>
 
 #include <gtest/gtest.h>

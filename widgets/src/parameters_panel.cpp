@@ -2,23 +2,31 @@
 #include "grainlab/ui/parameters_panel.h"
 
 #include <cmath>
+#include <string>
 
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QSpinBox>
+
+#include "grainlab/experiment_file.h"
 
 namespace grainlab::ui {
 
 ParametersPanel::ParametersPanel(QWidget* parent)
-    : QWidget(parent), pressures_(new QLineEdit(this)), grains_(new QSpinBox(this)),
-      friction_(new QDoubleSpinBox(this)), strain_(new QDoubleSpinBox(this)),
-      message_(new QLabel(this)) {
+    : QWidget(parent), compactionPressures_(new QLabel(this)), shearPressures_(new QLineEdit(this)),
+      grains_(new QSpinBox(this)), friction_(new QDoubleSpinBox(this)),
+      strain_(new QDoubleSpinBox(this)), message_(new QLabel(this)) {
     auto* form = new QFormLayout(this);
     form->setContentsMargins(4, 4, 4, 4);
-    pressures_->setToolTip(tr("Confining pressures in kPa, ascending, separated by commas. Each "
-                              "is a compaction stage and a shear test."));
+    compactionPressures_->setToolTip(tr("The experiment file's compaction stages, in kPa: the "
+                                        "sample is compacted at each in turn."));
+    compactionPressures_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    shearPressures_->setToolTip(tr("Which compacted samples to shear: confining pressures in kPa, "
+                                   "separated by commas, each one of the compaction pressures, "
+                                   "listed once. Each is a shear test."));
     grains_->setRange(4, 1000000);
     grains_->setToolTip(tr("Number of grains (the reference study uses 8450)."));
     friction_->setRange(0.0, 2.0);
@@ -31,12 +39,13 @@ ParametersPanel::ParametersPanel(QWidget* parent)
     strain_->setToolTip(tr("Axial strain ε1 at which each shear test ends."));
     message_->setWordWrap(true);
     message_->setStyleSheet(QStringLiteral("color: #b00020"));
-    form->addRow(tr("Confining pressures [kPa]"), pressures_);
+    form->addRow(tr("Compaction pressures [kPa]"), compactionPressures_);
+    form->addRow(tr("Shear at pressures [kPa]"), shearPressures_);
     form->addRow(tr("Grains"), grains_);
     form->addRow(tr("Friction μ (shear)"), friction_);
     form->addRow(tr("Axial strain target ε1"), strain_);
     form->addRow(message_);
-    connect(pressures_, &QLineEdit::textChanged, this, &ParametersPanel::check);
+    connect(shearPressures_, &QLineEdit::textChanged, this, &ParametersPanel::check);
     connect(grains_, &QSpinBox::valueChanged, this, &ParametersPanel::check);
     connect(friction_, &QDoubleSpinBox::valueChanged, this, &ParametersPanel::check);
     connect(strain_, &QDoubleSpinBox::valueChanged, this, &ParametersPanel::check);
@@ -44,55 +53,66 @@ ParametersPanel::ParametersPanel(QWidget* parent)
 
 void ParametersPanel::setExperiment(const ExperimentConfig& config) {
     base_ = config;
-    QStringList kilopascals;
-    for (double p :
-         config.shear.pressures.empty() ? config.compaction.pressures : config.shear.pressures) {
-        kilopascals << QString::number(p / 1e3, 'g', 6);
-    }
-    pressures_->setText(kilopascals.join(QStringLiteral(", ")));
+    const auto kilopascals = [](const std::vector<double>& pressures) {
+        QStringList out;
+        for (double p : pressures) {
+            out << QString::number(p / 1e3, 'g', QLocale::FloatingPointShortest);
+        }
+        return out.join(QStringLiteral(", "));
+    };
+    compactionPressures_->setText(kilopascals(config.compaction.pressures));
+    shearPressures_->setText(kilopascals(config.shear.pressures));
     grains_->setValue(config.assembly.grainCount);
     friction_->setValue(config.shear.friction);
     strain_->setValue(100.0 * config.shear.targetAxialStrain);
     check();
 }
 
-std::vector<double> ParametersPanel::parsePressures(QString* why) const {
+std::vector<double> ParametersPanel::parseShearPressures(QString* why) const {
     std::vector<double> out;
-    const QStringList items = pressures_->text().split(QLatin1Char(','), Qt::SkipEmptyParts);
+    const QStringList items = shearPressures_->text().split(QLatin1Char(','), Qt::SkipEmptyParts);
     for (const QString& item : items) {
+        // kPa as typed -> Pa by shifting the decimal point ("12.345" reads as "12.345e3"), so
+        // that a pressure typed as shown is the very number of the compaction pressure it names
+        // (12.345 * 1e3 need not be).
+        const QString text = item.trimmed();
         bool ok = false;
-        const double kPa = item.trimmed().toDouble(&ok);
-        if (!ok || !std::isfinite(kPa) || kPa <= 0.0) {
-            *why = tr("confining pressure '%1': must be a number > 0 [kPa]").arg(item.trimmed());
+        const bool exponent = text.contains(QLatin1Char('e'), Qt::CaseInsensitive);
+        const double pa =
+            exponent ? text.toDouble(&ok) * 1e3 : (text + QStringLiteral("e3")).toDouble(&ok);
+        if (!ok || !std::isfinite(pa) || pa <= 0.0) {
+            *why = tr("shear pressure '%1': must be a number > 0 [kPa]").arg(text);
             return {};
         }
-        if (!out.empty() && !(kPa * 1e3 > out.back())) {
-            *why = tr("confining pressures must be strictly ascending (%1 after %2 kPa)")
-                       .arg(kPa)
-                       .arg(out.back() / 1e3);
-            return {};
-        }
-        out.push_back(kPa * 1e3);
+        out.push_back(pa);
     }
     if (out.empty()) {
-        *why = tr("give at least one confining pressure [kPa]");
+        *why = tr("give at least one shear pressure [kPa]");
+        return {};
+    }
+    std::size_t bad = 0;
+    const std::string allowed = shearPressureRule(base_.compaction.pressures, out, bad);
+    if (!allowed.empty()) {
+        *why = tr("shear pressure %1 kPa: must be %2 [Pa]")
+                   .arg(QString::number(out[bad] / 1e3, 'g', QLocale::FloatingPointShortest))
+                   .arg(QString::fromStdString(allowed));
+        return {};
     }
     return out;
 }
 
 QString ParametersPanel::problem() const {
     QString why;
-    parsePressures(&why);
+    parseShearPressures(&why);
     return why;
 }
 
 ExperimentConfig ParametersPanel::applied() const {
     ExperimentConfig c = base_;
     QString why;
-    const std::vector<double> pressures = parsePressures(&why);
-    if (!pressures.empty()) {
-        c.compaction.pressures = pressures;
-        c.shear.pressures = pressures;
+    const std::vector<double> shear = parseShearPressures(&why);
+    if (!shear.empty()) {
+        c.shear.pressures = shear;
     }
     c.assembly.grainCount = grains_->value();
     c.shear.friction = friction_->value();
@@ -104,8 +124,8 @@ void ParametersPanel::check() {
     const QString why = problem();
     message_->setText(why);
     message_->setVisible(!why.isEmpty());
-    pressures_->setStyleSheet(why.isEmpty() ? QString()
-                                            : QStringLiteral("border: 1px solid #b00020"));
+    shearPressures_->setStyleSheet(why.isEmpty() ? QString()
+                                                 : QStringLiteral("border: 1px solid #b00020"));
     emit edited(why.isEmpty());
 }
 

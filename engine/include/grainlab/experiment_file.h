@@ -8,6 +8,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "grainlab/experiment.h"
 
@@ -27,5 +28,11 @@ ExperimentConfig readExperimentFile(const std::string& path);
 
 /// Validates experiment text; `sourceName` names it in error messages and becomes sourcePath.
 ExperimentConfig parseExperimentText(const std::string& text, const std::string& sourceName);
+
+/// The file's rule for shear.pressures, for whoever edits the list (the window): each one of the
+/// compaction pressures [Pa], listed once. Returns "" when `shear` keeps it; else what
+/// shear[index] must be, as the file's errors say it ("one of the compaction pressures (...)").
+std::string shearPressureRule(const std::vector<double>& compaction,
+                              const std::vector<double>& shear, std::size_t& index);
 
 } // namespace grainlab

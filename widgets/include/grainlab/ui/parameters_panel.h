@@ -1,8 +1,13 @@
 #pragma once
-// The experiment's main parameters, editable before a run: confining pressures, grain count,
-// friction during shear and the axial strain target. Values are checked as they are typed; an
-// invalid entry is named in red and valid() turns false (the window then refuses to start).
-// GUI thread only.
+// The experiment's main parameters, editable before a run: which compacted samples are sheared,
+// grain count, friction during shear and the axial strain target. The compaction stages are
+// shown, not edited: the panel never changes the experiment behind the user (one pressure list
+// for both would turn "compact at 15, 25, 50, 100 kPa, shear at 100 kPa" into one compaction at
+// 100 kPa). Values are checked as they are typed, the shear list by the experiment file's own
+// rule (shearPressureRule); an invalid entry is named in red and valid() turns false (the window
+// then refuses to start). GUI thread only.
+
+#include <vector>
 
 #include <QString>
 #include <QWidget>
@@ -29,7 +34,10 @@ public:
     /// Why the entries are invalid, or empty.
     QString problem() const;
 
-    QLineEdit* pressuresEdit() const { return pressures_; }
+    /// The shear tests' confining pressures [kPa], e.g. "15, 100".
+    QLineEdit* shearPressuresEdit() const { return shearPressures_; }
+    /// The compaction pressures [kPa], shown read-only.
+    QLabel* compactionPressuresLabel() const { return compactionPressures_; }
     QSpinBox* grainCountEdit() const { return grains_; }
     QDoubleSpinBox* frictionEdit() const { return friction_; }
     QDoubleSpinBox* strainTargetEdit() const { return strain_; }
@@ -39,12 +47,14 @@ signals:
     void edited(bool valid);
 
 private:
-    /// Parses "15, 25, 50" [kPa] into ascending pressures [Pa]; empty on error with `why` set.
-    std::vector<double> parsePressures(QString* why) const;
+    /// Parses the shear list "100, 15" [kPa] into pressures [Pa] and checks it against the
+    /// compaction pressures; empty on error with `why` set.
+    std::vector<double> parseShearPressures(QString* why) const;
     void check();
 
     ExperimentConfig base_;
-    QLineEdit* pressures_;
+    QLabel* compactionPressures_;
+    QLineEdit* shearPressures_;
     QSpinBox* grains_;
     QDoubleSpinBox* friction_;
     QDoubleSpinBox* strain_;

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gui_controller.h"
+#include "gui/simulation_controller.h"
 #include "test_scenes.h"
 
 namespace grainlab::ui {

@@ -18,13 +18,13 @@
 
 #include <H5Cpp.h>
 
+#include "cli/run_command.h"
+#include "cli/run_output.h"
 #include "grainlab/csv_series.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/measures.h"
 #include "grainlab/run_file.h"
-#include "run_command.h"
-#include "run_output.h"
 
 namespace grainlab {
 namespace {

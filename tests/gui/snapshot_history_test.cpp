@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gui_snapshot_history.h"
+#include "gui/snapshot_history.h"
 #include "test_scenes.h"
 
 namespace grainlab::ui {

@@ -1,12 +1,12 @@
-// See gui_app.h.
-#include "gui_app.h"
+// See app.h.
+#include "gui/app.h"
 
 #include <QApplication>
 #include <QGuiApplication>
 
 #include <fmt/format.h>
 
-#include "gui_main_window.h"
+#include "gui/main_window.h"
 
 namespace grainlab {
 

@@ -1,5 +1,5 @@
-// See gui_snapshot_history.h.
-#include "gui_snapshot_history.h"
+// See snapshot_history.h.
+#include "gui/snapshot_history.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 // other kept snapshot is dropped and from then on only every other record is kept (the stride
 // doubles), so the kept moments stay evenly spread over the whole run however long it is. The
 // run thins the same way when copying the kept snapshots costs the engine more than ~2 % of its
-// time (gui_experiment_run.cpp).
+// time (experiment_run.cpp).
 //
 // Threads: the run adds snapshots on the controller's worker thread (SteppedRun::
 // keepRecordSnapshots); the GUI thread looks them up. Every member function locks the history's
@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "grainlab/snapshot.h"
-#include "gui_snapshot_finisher.h"
+#include "gui/snapshot_finisher.h"
 
 namespace grainlab::ui {
 

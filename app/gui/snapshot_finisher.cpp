@@ -1,5 +1,5 @@
-// See gui_snapshot_finisher.h.
-#include "gui_snapshot_finisher.h"
+// See snapshot_finisher.h.
+#include "gui/snapshot_finisher.h"
 
 #include <chrono>
 #include <exception>

@@ -1,5 +1,5 @@
-// See gui_controller.h.
-#include "gui_controller.h"
+// See simulation_controller.h.
+#include "gui/simulation_controller.h"
 
 #include <algorithm>
 #include <chrono>

@@ -5,12 +5,12 @@
 // configuration into a new snapshot at most every publish interval (default ~16 ms; the main
 // window uses 33 ms) and never more often than 1/50 of the time the copy takes, so that pictures
 // cost the engine about 2 % of its time at most; the snapshot finisher (its own thread,
-// gui_snapshot_finisher.h) computes the picture's measures and publishes it by swapping a
+// snapshot_finisher.h) computes the picture's measures and publishes it by swapping a
 // mutex-guarded shared pointer. When the run pauses, steps or ends, the worker publishes a
 // complete snapshot itself, so that the paused picture is there when the state says so. The GUI
 // picks the newest snapshot on its own timer and never waits for the worker. The controller also
 // keeps the run's history (a snapshot at each shear record, within a memory budget:
-// gui_snapshot_history.h), cleared when a new run starts, for the GUI to show a past moment.
+// snapshot_history.h), cleared when a new run starts, for the GUI to show a past moment.
 //
 // Threads: every public function is called from the GUI thread; latestSnapshot() and status()
 // may be called from any thread. stateChanged is emitted from the worker thread (queued to
@@ -27,9 +27,9 @@
 #include <QObject>
 #include <QThread>
 
-#include "gui_run.h"
-#include "gui_snapshot_finisher.h"
-#include "gui_snapshot_history.h"
+#include "gui/experiment_run.h"
+#include "gui/snapshot_finisher.h"
+#include "gui/snapshot_history.h"
 
 namespace grainlab::ui {
 

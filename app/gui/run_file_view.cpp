@@ -1,5 +1,5 @@
-// See gui_run_file.h.
-#include "gui_run_file.h"
+// See run_file_view.h.
+#include "gui/run_file_view.h"
 
 #include <algorithm>
 #include <cmath>

@@ -24,7 +24,7 @@ public:
     virtual std::shared_ptr<Snapshot> snapshot() const = 0;
     virtual RunProgress progress() const = 0;
     /// From now on, adds a snapshot of the run at each of its shear records to `history` (the
-    /// ones the history wants; see gui_snapshot_history.h), during advance(). The history
+    /// ones the history wants; see snapshot_history.h), during advance(). The history
     /// outlives the run. By default a run keeps none.
     virtual void keepRecordSnapshots(SnapshotHistory* history) { (void)history; }
 };

@@ -1,4 +1,4 @@
-#include "run_command.h"
+#include "cli/run_command.h"
 
 #include <atomic>
 #include <chrono>
@@ -7,11 +7,11 @@
 
 #include <fmt/format.h>
 
+#include "cli/progress_bar.h"
+#include "cli/run_output.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/run_file.h"
-#include "progress_bar.h"
-#include "run_output.h"
 
 namespace grainlab {
 namespace {

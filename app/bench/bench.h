@@ -4,7 +4,7 @@
 // and prints grain-steps per second; optionally runs stock LAMMPS on the same disk assembly in
 // the same invocation (interleaved rounds), and the cost per grain-step from 1k to 128k grains.
 // Progress goes to stderr, the tables to stdout. Runs on the main thread. With --gui (GUI builds):
-// what the live window costs the engine and the scene's frame time instead (gui_bench.h).
+// what the live window costs the engine and the scene's frame time instead (window_bench.h).
 
 #include <cstdint>
 #include <string>
@@ -31,7 +31,7 @@ struct BenchOptions {
     std::string lammpsDirectory = std::string(GRAINLAB_SOURCE_DIR) + "/resources/bench/lammps";
     std::string lammpsExecutable = "lmp";
     bool scaling = false; ///< cost per grain-step at 1k, 8k, 32k, 128k grains instead
-    /// The live window instead (gui_bench.h): engine speed headless and in the window for
+    /// The live window instead (window_bench.h): engine speed headless and in the window for
     /// `guiSteps` steps of `experiment`'s first shear (threads: the first count of `threads`),
     /// and the scene's frame time with `grains` ovals.
     bool gui = false;
@@ -42,15 +42,10 @@ struct BenchOptions {
 /// Declares the bench options on the `bench` subcommand.
 void addBenchOptions(CLI::App& command, BenchOptions& options);
 
-int runBench(const BenchOptions& options);
+/// The window bench (`--gui`), window_bench.h's runGuiBench in GUI builds; the engine bench
+/// does not depend on the window, the command line hands it in (nullptr: built without it).
+using WindowBench = int (*)(const BenchOptions& options);
 
-/// Reads a LAMMPS data file of disks (atom_style sphere: id type diameter density x y z ix iy
-/// iz; an orthogonal box) into a state of disks with `parameters`. LAMMPS's y axis becomes the
-/// engine's x1 (the axial direction: in.bench compresses y) and x its x2; positions are taken
-/// relative to (xlo, ylo); grains keep the file's order (LAMMPS writes them spatially sorted).
-/// One shape per distinct diameter. The mass in the file must equal the engine's
-/// density * pi r^2 (in.prep uses `set density/disc`); velocities (Velocities section) are read.
-/// Throws std::runtime_error naming the file, the line and the problem.
-SimulationState readLammpsDisks(const std::string& path, const SimulationParameters& parameters);
+int runBench(const BenchOptions& options, WindowBench windowBench);
 
 } // namespace grainlab

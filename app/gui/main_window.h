@@ -15,9 +15,9 @@
 #include <QTimer>
 
 #include "grainlab/experiment.h"
-#include "gui_controller.h"
-#include "gui_run.h"
-#include "gui_run_file.h"
+#include "gui/experiment_run.h"
+#include "gui/run_file_view.h"
+#include "gui/simulation_controller.h"
 
 class QAction;
 class QComboBox;

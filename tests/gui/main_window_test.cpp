@@ -27,7 +27,7 @@
 #include "grainlab/ui/inspector_panel.h"
 #include "grainlab/ui/parameters_panel.h"
 #include "grainlab/ui/scene_view.h"
-#include "gui_main_window.h"
+#include "gui/main_window.h"
 
 namespace grainlab::ui {
 namespace {
@@ -160,22 +160,25 @@ TEST(MainWindow, ParametersAreValidatedBeforeARun) {
     MainWindow& w = f.window;
     ParametersPanel* p = w.parametersPanel();
     EXPECT_TRUE(p->valid());
-    p->pressuresEdit()->setText(QStringLiteral("15, abc"));
+    EXPECT_EQ(p->compactionPressuresLabel()->text(), QStringLiteral("15"));
+    p->shearPressuresEdit()->setText(QStringLiteral("15, abc"));
     EXPECT_FALSE(p->valid());
     EXPECT_TRUE(p->problem().contains(QStringLiteral("abc")));
     EXPECT_FALSE(w.startAction()->isEnabled());
-    p->pressuresEdit()->setText(QStringLiteral("25, 15"));
+    // 25 kPa is no compaction stage of this experiment: refused, not added as one.
+    p->shearPressuresEdit()->setText(QStringLiteral("15, 25"));
     EXPECT_FALSE(p->valid());
-    EXPECT_TRUE(p->problem().contains(QStringLiteral("ascending")));
-    p->pressuresEdit()->setText(QStringLiteral("15, 25"));
+    EXPECT_TRUE(p->problem().contains(QStringLiteral("one of the compaction pressures")));
+    EXPECT_FALSE(w.startAction()->isEnabled());
+    p->shearPressuresEdit()->setText(QStringLiteral("15"));
     p->grainCountEdit()->setValue(200);
     p->frictionEdit()->setValue(0.3);
     p->strainTargetEdit()->setValue(2.0);
     ASSERT_TRUE(p->valid());
     EXPECT_TRUE(w.startAction()->isEnabled());
     const ExperimentConfig c = p->applied();
-    EXPECT_EQ(c.compaction.pressures, (std::vector<double>{15e3, 25e3}));
-    EXPECT_EQ(c.shear.pressures, (std::vector<double>{15e3, 25e3}));
+    EXPECT_EQ(c.compaction.pressures, (std::vector<double>{15e3}));
+    EXPECT_EQ(c.shear.pressures, (std::vector<double>{15e3}));
     EXPECT_EQ(c.assembly.grainCount, 200);
     EXPECT_DOUBLE_EQ(c.shear.friction, 0.3);
     EXPECT_DOUBLE_EQ(c.shear.targetAxialStrain, 0.02);

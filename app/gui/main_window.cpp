@@ -1,5 +1,5 @@
-// See gui_main_window.h.
-#include "gui_main_window.h"
+// See main_window.h.
+#include "gui/main_window.h"
 
 #include <algorithm>
 #include <cmath>

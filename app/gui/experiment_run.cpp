@@ -1,13 +1,13 @@
-// See gui_run.h: the ExperimentRunner adapter. It is also the runner's RunOutput, only to hear
+// See experiment_run.h: the ExperimentRunner adapter. It is also the runner's RunOutput, only to hear
 // of each record (nothing is written): at the shear records the history wants, it builds a
 // snapshot of the scene and keeps it there.
-#include "gui_run.h"
+#include "gui/experiment_run.h"
 
 #include <chrono>
 #include <string>
 #include <vector>
 
-#include "gui_snapshot_history.h"
+#include "gui/snapshot_history.h"
 
 namespace grainlab::ui {
 namespace {

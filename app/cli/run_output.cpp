@@ -1,4 +1,4 @@
-#include "run_output.h"
+#include "cli/run_output.h"
 
 #include <filesystem>
 #include <stdexcept>

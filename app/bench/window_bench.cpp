@@ -1,5 +1,5 @@
-// See gui_bench.h.
-#include "gui_bench.h"
+// See window_bench.h.
+#include "bench/window_bench.h"
 
 #include <algorithm>
 #include <atomic>
@@ -24,16 +24,16 @@
 #include <fmt/format.h>
 #include <time.h>
 
-#include "bench.h"
+#include "bench/bench.h"
+#include "cli/progress_bar.h"
 #include "grainlab/assembly.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/simulation.h"
 #include "grainlab/ui/gl_scene_layer.h"
 #include "grainlab/ui/scene_renderer.h"
 #include "grainlab/ui/scene_view.h"
-#include "gui_main_window.h"
-#include "gui_snapshot_history.h"
-#include "progress_bar.h"
+#include "gui/main_window.h"
+#include "gui/snapshot_history.h"
 
 namespace grainlab {
 namespace {
@@ -287,7 +287,7 @@ void benchWindow(const BenchOptions& o, int threads) {
                "size,\n    no force chains, no void cells)\n",
                config.name, o.experiment, config.assembly.grainCount, pressure / 1e3, o.guiSteps,
                threads, o.rounds);
-    // The window keeps QPainter where OpenGL is software (gui_main_window.cpp): measure the
+    // The window keeps QPainter where OpenGL is software (gui/main_window.cpp): measure the
     // OpenGL window too, to show why.
     std::vector<WindowVariant> variants(1);
     variants[0].name = "live window";
