@@ -2,12 +2,14 @@
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "bench/bench.h"
 #include "cli/run_command.h"
+#include "study/study_command.h"
 
 #ifdef GRAINLAB_WITH_GUI
 #include "bench/window_bench.h"
@@ -15,6 +17,16 @@
 #endif
 
 namespace grainlab {
+namespace {
+
+/// This executable's path, for the commands a study runs (/proc/self/exe where there is one).
+std::string executablePath(const char* argv0) {
+    std::error_code error;
+    const auto self = std::filesystem::read_symlink("/proc/self/exe", error);
+    return error ? std::filesystem::absolute(argv0).string() : self.string();
+}
+
+} // namespace
 
 int runCommandLine(int argc, char** argv) {
     CLI::App app{"GrainLab: 2D discrete element simulations of oval grains"};
@@ -34,6 +46,24 @@ int runCommandLine(int argc, char** argv) {
     runCommand->add_option("--threads", run.threads, "threads (default: the experiment's)");
     runCommand->add_flag("--quiet", run.quiet, "no progress bar");
 
+    StudyOptions study;
+    auto* studyCommand = app.add_subcommand(
+        "study", "run an experiment at several method settings and seeds; chart error against "
+                 "cost and recommend the cheapest valid setting");
+    studyCommand->add_option("study", study.studyFile, "study file (.json)");
+    studyCommand->add_option("--out", study.out, "study folder (runs, study.csv, summary.csv)");
+    studyCommand->add_option("--jobs", study.jobs, "runs at once (default: as the processors allow)")
+        ->check(CLI::Range(1, 1024));
+    studyCommand->add_option("--emit", study.emit,
+                             "write the runs as a Slurm job array (slurm) or a GNU parallel job "
+                             "list (parallel) instead of running them")
+        ->check(CLI::IsMember({"slurm", "parallel"}));
+    studyCommand->add_flag("--quiet", study.quiet, "no progress bar");
+    std::string collectFolder;
+    auto* collectCommand = studyCommand->add_subcommand(
+        "collect", "summarise a study folder whose runs were run elsewhere (Slurm, GNU parallel)");
+    collectCommand->add_option("folder", collectFolder, "the study folder")->required();
+
     std::string experiment = std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json";
     app.add_option("--experiment", experiment, "experiment to open in the window");
 
@@ -49,6 +79,17 @@ int runCommandLine(int argc, char** argv) {
 #else
             return runBench(bench, nullptr);
 #endif
+        }
+        if (*collectCommand) {
+            return collectStudyCommand(collectFolder, study.quiet);
+        }
+        if (*studyCommand) {
+            if (study.studyFile.empty() || study.out.empty()) {
+                fmt::print(stderr, "grainlab study: give a study file and --out DIR\n");
+                return 2;
+            }
+            study.grainlab = executablePath(argv[0]);
+            return runStudyCommand(study);
         }
         if (*runCommand) {
             if (run.resume.empty() == run.experiment.empty()) {

@@ -6,6 +6,7 @@
 // its expansion into runs: each run is an ordinary experiment file for `grainlab run`, written
 // into its own run folder. Pure functions, no I/O, any thread.
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -64,6 +65,10 @@ struct Tolerance {
 struct StudySpec {
     std::string name = "study";
     std::string sourcePath;     ///< the study file ("" if built in code)
+    /// The study file's text with its base experiment written inline: what a study folder keeps
+    /// (study.json), so that it is complete on its own.
+    std::string sourceText;
+    std::string costMeasure = "cpu_seconds"; ///< "cpu_seconds", "wall_seconds" or "grain_steps"
     std::string baseExperiment; ///< the base experiment file's text (JSON)
     std::string baseSource;     ///< where it came from (a path, or "<study>:base")
     std::vector<Knob> knobs;

@@ -1,0 +1,33 @@
+#pragma once
+// What a run folder's run has cost so far, kept beside its run file as cost.json and updated by
+// every `grainlab run` process that works on it (a resumed run adds to what the earlier
+// processes spent): wall and processor seconds, steps, grain-steps, threads, how many processes,
+// and whether the run has finished. The study commands read it; a user can too (docs/formats.md).
+// Main thread.
+
+#include <cstdint>
+#include <string>
+
+namespace grainlab {
+
+struct RunCostRecord {
+    bool finished = false;        ///< the experiment ran to its end
+    double wallSeconds = 0;       ///< [s], summed over processes
+    double cpuSeconds = 0;        ///< user + system time of every thread [s], summed
+    std::int64_t steps = 0;       ///< time steps computed, summed (repeated work included)
+    std::int64_t grainSteps = 0;  ///< steps times grains stepped
+    int threads = 0;              ///< engine threads of the last process
+    int processes = 0;            ///< processes that worked on the run
+};
+
+/// cost.json in `runFolder`; all zeros (not finished) when there is none. Throws
+/// std::runtime_error naming the file when it exists but cannot be read.
+RunCostRecord readRunCost(const std::string& runFolder);
+
+/// Replaces cost.json in `runFolder` (through a temporary file and a rename).
+void writeRunCost(const std::string& runFolder, const RunCostRecord& cost);
+
+/// The path of cost.json in `runFolder`.
+std::string runCostPath(const std::string& runFolder);
+
+} // namespace grainlab

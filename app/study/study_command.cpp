@@ -1,0 +1,237 @@
+#include "study/study_command.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/atomic_file.h"
+#include "cli/progress_bar.h"
+#include "cli/run_cost.h"
+#include "grainlab/study_file.h"
+#include "study/job_list.h"
+#include "study/process_pool.h"
+#include "study/study_files.h"
+
+namespace grainlab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::atomic<bool> stopRequested{false};
+
+extern "C" void onStudyInterrupt(int) { stopRequested.store(true); }
+
+/// The engine threads each run asks for (the experiment file's "threads", default 1).
+int threadsPerRun(const StudyPlan& plan) {
+    int threads = 1;
+    for (const StudyRun& r : plan.runs) {
+        const auto j = nlohmann::json::parse(r.experimentText);
+        if (j.contains("threads")) {
+            threads = std::max(threads, j["threads"].get<int>());
+        }
+    }
+    return threads;
+}
+
+/// Creates the study folder, or checks that an existing one holds this very study. Writes
+/// study.json and each run's experiment file (unless there already, identical).
+void prepareFolder(const fs::path& dir, const StudySpec& spec, const StudyPlan& plan) {
+    const fs::path studyJson = dir / "study.json";
+    if (fs::exists(dir)) {
+        if (!fs::is_directory(dir)) {
+            throw std::runtime_error(fmt::format("--out {}: exists and is not a folder", dir.string()));
+        }
+        if (!fs::exists(studyJson)) {
+            if (!fs::is_empty(dir)) {
+                throw std::runtime_error(fmt::format(
+                    "--out {}: the folder is not empty and holds no study (no study.json); "
+                    "give a new or empty folder",
+                    dir.string()));
+            }
+        } else if (readWholeFile(studyJson.string()) != spec.sourceText) {
+            throw std::runtime_error(fmt::format(
+                "--out {}: the folder holds a different study (its study.json differs from {}); "
+                "give another folder, or continue that study with its own study.json",
+                dir.string(), spec.sourcePath));
+        }
+    }
+    for (const char* sub : {"experiments", "runs", "logs"}) {
+        fs::create_directories(dir / sub);
+    }
+    if (!fs::exists(studyJson)) {
+        writeFileAtomically(studyJson.string(), spec.sourceText);
+    }
+    for (const StudyRun& r : plan.runs) {
+        const fs::path file = dir / "experiments" / (r.id + ".json");
+        if (fs::exists(file)) {
+            if (readWholeFile(file.string()) != r.experimentText) {
+                throw std::runtime_error(fmt::format(
+                    "{}: differs from what the study makes of this run; the study folder was "
+                    "changed by hand",
+                    file.string()));
+            }
+            continue;
+        }
+        writeFileAtomically(file.string(), r.experimentText);
+    }
+}
+
+/// Summarises the finished runs into study.csv, summary.csv and recommended.json; prints the
+/// recommendation. Returns how many runs had results.
+std::size_t summarise(const fs::path& dir, const StudySpec& spec, const StudyPlan& plan,
+                      bool quiet) {
+    std::vector<RunResult> results;
+    for (std::size_t i = 0; i < plan.runs.size(); ++i) {
+        if (auto r = readRunResult((dir / "runs" / plan.runs[i].id).string(), int(i))) {
+            results.push_back(std::move(*r));
+        }
+    }
+    const StudySummary summary = summariseStudy(spec, plan, results, spec.costMeasure);
+    writeStudyCsv((dir / "study.csv").string(), spec, plan, results, summary);
+    writeSummaryCsv((dir / "summary.csv").string(), spec, plan, summary);
+    if (summary.recommended) {
+        const int best = *summary.recommended;
+        writeFileAtomically((dir / "recommended.json").string(),
+                            recommendedExperiment(spec, plan, best));
+        if (!quiet) {
+            const SettingSummary& s = summary.settings[std::size_t(best)];
+            fmt::print("grainlab study: recommended setting {} ({} of {} runs done): {:.2f}x "
+                       "cheaper than the reference in {}; written as {}\n",
+                       plan.settings[std::size_t(best)].id, results.size(), plan.runs.size(),
+                       s.speedUp.value_or(1.0), spec.costMeasure,
+                       (dir / "recommended.json").string());
+        }
+    } else if (!quiet) {
+        fmt::print("grainlab study: no recommendation yet ({} of {} runs done; the reference "
+                   "needs results)\n",
+                   results.size(), plan.runs.size());
+    }
+    return results.size();
+}
+
+} // namespace
+
+int runStudyCommand(const StudyOptions& options) {
+    const StudySpec spec = readStudyFile(options.studyFile);
+    const StudyPlan plan = planStudy(spec);
+    const fs::path dir = fs::absolute(options.out).lexically_normal();
+    prepareFolder(dir, spec, plan);
+    const StudyLayout layout{dir.string(), fs::absolute(options.grainlab).string()};
+    std::vector<std::string> ids;
+    for (const StudyRun& r : plan.runs) {
+        ids.push_back(r.id);
+    }
+    const int threads = threadsPerRun(plan);
+
+    if (options.emit == "slurm" || options.emit == "parallel") {
+        const bool slurm = options.emit == "slurm";
+        const fs::path file = dir / (slurm ? "study.slurm" : "jobs.txt");
+        writeFileAtomically(file.string(), slurm ? slurmScript(layout, spec.name, ids, threads)
+                                                 : parallelJobList(layout, ids));
+        fmt::print("grainlab study: {} runs written as {}\n", ids.size(), file.string());
+        if (slurm) {
+            fmt::print("Submit with: sbatch {}\n", file.string());
+        } else {
+            fmt::print("Run with: parallel --jobs N < {}\n", file.string());
+        }
+        fmt::print("Then summarise with: {} study collect {}\n", layout.grainlab, dir.string());
+        return 0;
+    }
+    if (!options.emit.empty()) {
+        throw std::runtime_error(
+            fmt::format("--emit {}: must be slurm or parallel", options.emit));
+    }
+
+    // The runs still to do: a run folder with a run file continues, a finished run is skipped.
+    std::vector<PoolJob> jobs;
+    std::vector<std::size_t> jobRun;
+    std::size_t finishedBefore = 0;
+    for (std::size_t i = 0; i < plan.runs.size(); ++i) {
+        const std::string folder = layout.runFolder(plan.runs[i].id);
+        if (readRunCost(folder).finished) {
+            ++finishedBefore;
+            continue;
+        }
+        const bool resume = fs::exists(fs::path(folder) / "run.h5");
+        jobs.push_back({runArguments(layout, plan.runs[i].id, resume),
+                        layout.logFile(plan.runs[i].id)});
+        jobRun.push_back(i);
+    }
+    const int slots = options.jobs > 0 ? options.jobs : defaultSlots(threads);
+    if (!options.quiet) {
+        fmt::print("grainlab study {}: {} settings x {} seeds = {} runs, {} done, {} at a time; "
+                   "folder {}\n",
+                   spec.name, plan.settings.size(), spec.seeds.size(), plan.runs.size(),
+                   finishedBefore, slots, dir.string());
+    }
+
+    stopRequested.store(false);
+    auto previous = std::signal(SIGINT, onStudyInterrupt);
+    auto previousTerm = std::signal(SIGTERM, onStudyInterrupt);
+    ProgressBar bar(fmt::format("study {} ({} runs)", spec.name, plan.runs.size()));
+    std::vector<std::string> failed;
+    const auto total = double(plan.runs.size());
+    const auto draw = [&](std::size_t ended, std::size_t running) {
+        if (!options.quiet) {
+            bar.update(double(finishedBefore + ended) / total,
+                       fmt::format("{} done, {} running", finishedBefore + ended, running));
+        }
+    };
+    ProcessPool pool(slots);
+    const auto results = pool.run(
+        jobs,
+        [&](std::size_t job, const PoolResult& r) {
+            if (!r.succeeded() && !stopRequested.load()) {
+                failed.push_back(fmt::format("{} (exit {}{}; log {})", plan.runs[jobRun[job]].id,
+                                             r.exitStatus,
+                                             r.signal ? fmt::format(", signal {}", r.signal) : "",
+                                             jobs[job].logPath));
+            }
+        },
+        draw, &stopRequested);
+    bar.finish();
+    std::signal(SIGINT, previous);
+    std::signal(SIGTERM, previousTerm);
+
+    summarise(dir, spec, plan, options.quiet);
+    if (stopRequested.load()) {
+        fmt::print(stderr,
+                   "grainlab study: interrupted; the runs wrote checkpoints. Continue with the "
+                   "same command: grainlab study {} --out {}\n",
+                   options.studyFile, dir.string());
+        return 130;
+    }
+    if (!failed.empty()) {
+        fmt::print(stderr, "grainlab study: {} run(s) failed:\n", failed.size());
+        for (const std::string& f : failed) {
+            fmt::print(stderr, "  {}\n", f);
+        }
+        return 1;
+    }
+    return 0;
+}
+
+int collectStudyCommand(const std::string& folder, bool quiet) {
+    const fs::path dir = fs::absolute(folder).lexically_normal();
+    const fs::path studyJson = dir / "study.json";
+    if (!fs::exists(studyJson)) {
+        throw std::runtime_error(
+            fmt::format("study collect {}: no study.json: not a study folder", dir.string()));
+    }
+    const StudySpec spec = readStudyFile(studyJson.string());
+    const StudyPlan plan = planStudy(spec);
+    const std::size_t done = summarise(dir, spec, plan, quiet);
+    if (!quiet) {
+        fmt::print("grainlab study collect: {} of {} runs finished; results in {}\n", done,
+                   plan.runs.size(), dir.string());
+    }
+    return done == plan.runs.size() ? 0 : 3;
+}
+
+} // namespace grainlab

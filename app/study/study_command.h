@@ -1,0 +1,28 @@
+#pragma once
+// `grainlab study FILE --out DIR`: runs a study's runs (every setting at every seed) as
+// independent `grainlab run` processes through a local pool, with one progress bar and ETA for
+// the whole study, then summarises them (study.csv, summary.csv, recommended.json; docs/study.md).
+// A killed study resumes with the same command: finished runs are not redone, an interrupted one
+// continues from its checkpoint. `--emit slurm|parallel` writes the runs as a Slurm job array or
+// a GNU parallel job list instead; `grainlab study collect DIR` summarises once they are done.
+// Main thread.
+
+#include <string>
+
+namespace grainlab {
+
+struct StudyOptions {
+    std::string studyFile; ///< the study file (.json)
+    std::string out;       ///< the study folder
+    int jobs = 0;          ///< runs at once; 0: as many as the processors allow
+    std::string emit;      ///< "", "slurm" or "parallel"
+    bool quiet = false;    ///< no progress bar
+    std::string grainlab;  ///< this executable (argv[0] resolved), for the runs' commands
+};
+
+int runStudyCommand(const StudyOptions& options);
+
+/// `grainlab study collect DIR`: summarises the finished runs of a study folder.
+int collectStudyCommand(const std::string& folder, bool quiet = false);
+
+} // namespace grainlab
