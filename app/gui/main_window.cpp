@@ -5,8 +5,6 @@
 #include <cmath>
 
 #include <QAction>
-#include <QCheckBox>
-#include <QComboBox>
 #include <QDateTime>
 #include <QDir>
 #include <QFileDialog>
@@ -15,7 +13,6 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QProgressBar>
-#include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
 #include <QSplitter>
@@ -30,6 +27,7 @@
 #include "grainlab/ui/figure_export.h"
 #include "grainlab/ui/inspector_panel.h"
 #include "grainlab/ui/parameters_panel.h"
+#include "grainlab/ui/scene_options_bar.h"
 #include "grainlab/ui/scene_view.h"
 
 namespace grainlab::ui {
@@ -76,10 +74,11 @@ QString stateName(RunState state) {
 MainWindow::MainWindow(RunMaker maker, QWidget* parent)
     : QMainWindow(parent), maker_(std::move(maker)),
       controller_(std::make_unique<SimulationController>()), scene_(new SceneView),
-      charts_(new ChartsPanel), inspector_(new InspectorPanel), parameters_(new ParametersPanel),
-      stage_(new QLabel), speed_(new QLabel), eta_(new QLabel), cursor_(new QLabel),
-      error_(new QLabel), progress_(new QProgressBar), scrubBar_(new QWidget),
-      scrub_(new QSlider(Qt::Horizontal)), scrubLabel_(new QLabel) {
+      sceneOptions_(new SceneOptionsBar(scene_)), charts_(new ChartsPanel),
+      inspector_(new InspectorPanel), parameters_(new ParametersPanel), stage_(new QLabel),
+      speed_(new QLabel), eta_(new QLabel), cursor_(new QLabel), error_(new QLabel),
+      progress_(new QProgressBar), scrubBar_(new QWidget), scrub_(new QSlider(Qt::Horizontal)),
+      scrubLabel_(new QLabel) {
     setWindowTitle(QStringLiteral("GrainLab"));
     // OpenGL draws the grains where the platform has a graphics card; the offscreen platform
     // (tests, CI) and GRAINLAB_NO_OPENGL=1 keep the QPainter view, which draws the same picture.
@@ -97,7 +96,7 @@ MainWindow::MainWindow(RunMaker maker, QWidget* parent)
     auto* sceneSide = new QWidget;
     auto* sceneLayout = new QVBoxLayout(sceneSide);
     sceneLayout->setContentsMargins(0, 0, 0, 0);
-    sceneLayout->addWidget(buildSceneOptions());
+    sceneLayout->addWidget(sceneOptions_);
     sceneLayout->addWidget(scene_, 1);
     auto* scrubRow = new QHBoxLayout(scrubBar_);
     scrubRow->setContentsMargins(4, 2, 4, 2);
@@ -221,51 +220,6 @@ void MainWindow::buildMenus() {
     exports->addAction(tr("Series as &CSV…"), this, &MainWindow::exportCsvDialog);
     exports->addSeparator();
     exports->addAction(tr("&Figure set into a folder…"), this, &MainWindow::exportFigureSetDialog);
-}
-
-QWidget* MainWindow::buildSceneOptions() {
-    auto* box = new QWidget;
-    auto* row = new QHBoxLayout(box);
-    row->setContentsMargins(4, 2, 4, 2);
-    colouring_ = new QComboBox;
-    colouring_->addItems(
-        {tr("size"), tr("rotation"), tr("coordination"), tr("load-bearing"), tr("uniform")});
-    forceChains_ = new QComboBox;
-    forceChains_->addItems({tr("no force chains"), tr("strong force chains"), tr("all forces")});
-    voidCells_ = new QComboBox;
-    voidCells_->addItems(
-        {tr("no void cells"), tr("void cells by valence"), tr("void cells by area")});
-    rose_ = new QCheckBox(tr("normal rose"));
-    images_ = new QCheckBox(tr("periodic images"));
-    auto* fit = new QPushButton(tr("Fit"));
-    row->addWidget(new QLabel(tr("Colour:")));
-    row->addWidget(colouring_);
-    row->addWidget(forceChains_);
-    row->addWidget(voidCells_);
-    row->addWidget(rose_);
-    row->addWidget(images_);
-    row->addStretch(1);
-    row->addWidget(fit);
-    connect(colouring_, &QComboBox::currentIndexChanged, this, &MainWindow::applySceneOptions);
-    connect(forceChains_, &QComboBox::currentIndexChanged, this, &MainWindow::applySceneOptions);
-    connect(voidCells_, &QComboBox::currentIndexChanged, this, &MainWindow::applySceneOptions);
-    connect(rose_, &QCheckBox::toggled, this, &MainWindow::applySceneOptions);
-    connect(images_, &QCheckBox::toggled, this, [this] {
-        applySceneOptions();
-        scene_->fitToCell();
-    });
-    connect(fit, &QPushButton::clicked, scene_, &SceneView::fitToCell);
-    return box;
-}
-
-void MainWindow::applySceneOptions() {
-    SceneOptions o = scene_->renderer().options();
-    o.colouring = static_cast<GrainColouring>(colouring_->currentIndex());
-    o.forceChains = static_cast<ForceChains>(forceChains_->currentIndex());
-    o.voidCells = static_cast<VoidCellShading>(voidCells_->currentIndex());
-    o.contactRose = rose_->isChecked();
-    o.periodicImages = images_->isChecked();
-    scene_->setOptions(o);
 }
 
 bool MainWindow::openExperiment(const QString& path, QString* error) {

@@ -20,11 +20,9 @@
 #include "gui/simulation_controller.h"
 
 class QAction;
-class QComboBox;
 class QLabel;
 class QProgressBar;
 class QSpinBox;
-class QCheckBox;
 class QTabWidget;
 class QSlider;
 
@@ -33,6 +31,7 @@ namespace grainlab::ui {
 class ChartsPanel;
 class InspectorPanel;
 class ParametersPanel;
+class SceneOptionsBar;
 class SceneView;
 
 class MainWindow : public QMainWindow {
@@ -64,6 +63,7 @@ public:
 
     SimulationController& controller() { return *controller_; }
     SceneView* sceneView() const { return scene_; }
+    SceneOptionsBar* sceneOptionsBar() const { return sceneOptions_; }
     ChartsPanel* chartsPanel() const { return charts_; }
     InspectorPanel* inspector() const { return inspector_; }
     ParametersPanel* parametersPanel() const { return parameters_; }
@@ -85,8 +85,6 @@ public slots:
 private:
     void buildActions();
     void buildMenus();
-    QWidget* buildSceneOptions();
-    void applySceneOptions();
     void updateControls(RunState state);
     void openExperimentDialog();
     void exportSceneDialog();
@@ -114,15 +112,11 @@ private:
     QTimer timer_;
 
     SceneView* scene_;
+    SceneOptionsBar* sceneOptions_;
     ChartsPanel* charts_;
     InspectorPanel* inspector_;
     ParametersPanel* parameters_;
     QTabWidget* tabs_;
-    QComboBox* colouring_ = nullptr;
-    QComboBox* forceChains_ = nullptr;
-    QComboBox* voidCells_ = nullptr;
-    QCheckBox* rose_ = nullptr;
-    QCheckBox* images_ = nullptr;
     QAction* open_ = nullptr;
     QAction* start_ = nullptr;
     QAction* pause_ = nullptr;

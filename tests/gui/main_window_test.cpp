@@ -26,6 +26,7 @@
 #include "grainlab/ui/colour_maps.h"
 #include "grainlab/ui/inspector_panel.h"
 #include "grainlab/ui/parameters_panel.h"
+#include "grainlab/ui/scene_options_bar.h"
 #include "grainlab/ui/scene_view.h"
 #include "gui/main_window.h"
 
@@ -123,7 +124,7 @@ TEST(MainWindow, ClickAVoidCellWhilePausedAndExportTheFigureSet) {
     click(w, w.pauseAction());
     ASSERT_TRUE(waitFor([&] { return f.state() == RunState::Paused; }));
     w.refresh();
-    auto* voids = w.findChildren<QComboBox*>().at(2);
+    QComboBox* voids = w.sceneOptionsBar()->voidCellsBox();
     voids->setCurrentIndex(1); // void cells by valence
     const Snapshot& s = *f.shown();
     int chosen = 0;
@@ -202,9 +203,8 @@ TEST(MainWindow, RunsToTheEndAndWritesScreenshots) {
     }
     const QDir images(QStringLiteral(GRAINLAB_SOURCE_DIR "/docs/images"));
     ASSERT_TRUE(QDir().mkpath(images.path()));
-    auto combos = w.findChildren<QComboBox*>();
-    combos.at(1)->setCurrentIndex(1); // strong force chains
-    combos.at(2)->setCurrentIndex(1); // void cells by valence
+    w.sceneOptionsBar()->forceChainsBox()->setCurrentIndex(1); // strong force chains
+    w.sceneOptionsBar()->voidCellsBox()->setCurrentIndex(1);   // void cells by valence
     const Snapshot& s = *f.shown();
     int chosen = 0;
     for (std::size_t v = 0; v < s.voidCells.size(); ++v) {
@@ -217,9 +217,9 @@ TEST(MainWindow, RunsToTheEndAndWritesScreenshots) {
         w.sceneView()->toWidget(s.voidCells[chosen].centroid1, s.voidCells[chosen].centroid2));
     QTest::qWait(50);
     EXPECT_TRUE(w.grab().save(images.filePath(QStringLiteral("main-window.png"))));
-    combos.at(0)->setCurrentIndex(3); // load-bearing vs rattlers
-    combos.at(1)->setCurrentIndex(2); // all forces
-    combos.at(2)->setCurrentIndex(0);
+    w.sceneOptionsBar()->colouringBox()->setCurrentIndex(3);   // load-bearing vs rattlers
+    w.sceneOptionsBar()->forceChainsBox()->setCurrentIndex(2); // all forces
+    w.sceneOptionsBar()->voidCellsBox()->setCurrentIndex(0);
     QTest::qWait(20);
     EXPECT_TRUE(w.sceneView()->grab().save(images.filePath(QStringLiteral("scene-forces.png"))));
     EXPECT_TRUE(w.chartsPanel()->grab().save(images.filePath(QStringLiteral("charts.png"))));
@@ -394,7 +394,7 @@ TEST(MainWindow, RunFileCheckpointsColourTheRotationSinceTheirTestStarted) {
     EXPECT_GT(largest, 0.05);
 
     // Drawn: coloured by rotation, the grains that turned are not the colour of no rotation.
-    w.findChildren<QComboBox*>().at(0)->setCurrentIndex(1); // rotation
+    w.sceneOptionsBar()->colouringBox()->setCurrentIndex(1); // rotation
     const QImage image = w.sceneView()->grab().toImage();
     const SceneRenderer& r = w.sceneView()->renderer();
     int turned = 0, drawn = 0;

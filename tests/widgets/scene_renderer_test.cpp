@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "grainlab/measures.h"
 #include "grainlab/ui/scene_renderer.h"
 #include "overlay_points.h"
 #include "test_scenes.h"
@@ -62,6 +63,28 @@ TEST(SceneRenderer, RendersEveryOverlayTogether) {
 TEST(SceneRenderer, FixtureHasContactsAndVoidCells) {
     EXPECT_GT(scene()->network.contacts.size(), scene()->x1.size());
     EXPECT_GT(scene()->voidCells.size(), 10u);
+}
+
+TEST(SceneRenderer, LoadBearingGrainsAndStrongThresholdAreTheEngines) {
+    // A snapshot without its measures: the renderer finds the load-bearing graph itself, by
+    // the engine's rule, and splits strong from weak contacts at the engine's f_a.
+    auto bare = std::make_shared<Snapshot>(*scene());
+    bare->loadBearing.clear();
+    SceneRenderer r;
+    r.setSnapshot(bare);
+    r.options().colouring = GrainColouring::LoadBearing;
+    const LoadBearingGraph graph = loadBearingGraph(bare->network);
+    ASSERT_EQ(graph.grainInGraph.size(), bare->x1.size());
+    int outside = 0;
+    for (std::size_t g = 0; g < bare->x1.size(); ++g) {
+        const bool drawnIn = r.grainColour(static_cast<int>(g)) == QColor(70, 110, 170);
+        EXPECT_EQ(drawnIn, graph.grainInGraph[g] != 0) << "grain " << g;
+        outside += graph.grainInGraph[g] ? 0 : 1;
+    }
+    EXPECT_GT(outside, 0);
+    EXPECT_LT(outside, static_cast<int>(bare->x1.size()));
+    EXPECT_EQ(r.strongForceThreshold(),
+              grainlab::strongForceThreshold(bare->network, StrongForceThreshold::RmsForce));
 }
 
 TEST(SceneRenderer, GrainColourAtEveryCentreAndCellFillFarFromGrains) {

@@ -10,6 +10,12 @@
 #include "grainlab/ui/polygon_triangulation.h"
 #include "grainlab/ui/scene_renderer.h"
 
+// The shaders' resource file lives in this static library: nothing else references it, so it is
+// registered by hand (Q_INIT_RESOURCE, outside any namespace) before the first shader is read.
+static void initShaderResources() {
+    Q_INIT_RESOURCE(shaders);
+}
+
 namespace grainlab::ui {
 namespace {
 
@@ -23,94 +29,6 @@ struct Instance {
     std::uint8_t rgba[4];
 };
 
-constexpr const char* kVertexShader = R"(#version 330 core
-layout(location = 0) in vec2 corner;
-layout(location = 1) in vec3 pose;
-layout(location = 2) in vec2 halfSize;
-layout(location = 3) in vec4 arcs;
-layout(location = 4) in float junctionX;
-layout(location = 5) in vec4 colour;
-uniform vec2 origin;   // screen position of the world origin [px]
-uniform float scale;   // [px/m]
-uniform vec2 viewport; // [px]
-out vec2 body;
-flat out vec4 fill;
-flat out vec4 arcParameters;
-flat out float junction;
-flat out float radiusPixels;
-void main() {
-    // The body-frame bounding box, grown by 1.5 px for the antialiased edge.
-    body = corner * (halfSize + vec2(1.5 / scale));
-    float c = cos(pose.z), s = sin(pose.z);
-    vec2 w = pose.xy + vec2(c * body.x - s * body.y, s * body.x + c * body.y);
-    vec2 screen = vec2(origin.x + scale * w.y, origin.y - scale * w.x); // x1 up, x2 right
-    gl_Position = vec4(screen.x / viewport.x * 2.0 - 1.0, 1.0 - screen.y / viewport.y * 2.0, 0.0, 1.0);
-    fill = colour;
-    arcParameters = arcs;
-    junction = junctionX;
-    radiusPixels = halfSize.x * scale;
-}
-)";
-
-constexpr const char* kFragmentShader = R"(#version 330 core
-in vec2 body;
-flat in vec4 fill;
-flat in vec4 arcParameters;
-flat in float junction;
-flat in float radiusPixels;
-uniform float scale;
-out vec4 colour;
-void main() {
-    float endOffset = arcParameters.x, r = arcParameters.y;
-    float sideOffset = arcParameters.z, R = arcParameters.w;
-    // Signed distance to the oval: union of the end discs with the part of the side discs'
-    // intersection between the junctions (the end discs are internally tangent to both).
-    float right = length(body - vec2(endOffset, 0.0)) - r;
-    float left = length(body + vec2(endOffset, 0.0)) - r;
-    float top = length(body - vec2(0.0, -sideOffset)) - R;
-    float bottom = length(body - vec2(0.0, sideOffset)) - R;
-    float slab = abs(body.x) - junction;
-    float d = min(min(right, left), max(max(top, bottom), slab)) * scale; // [px]
-    // Grains wider than a few pixels get a one-pixel darker outline centred on the boundary,
-    // like the QPainter view's pen (which reaches half a pixel outside).
-    bool outlined = radiusPixels > 6.0;
-    float alpha = clamp((outlined ? 1.0 : 0.5) - d, 0.0, 1.0);
-    if (alpha <= 0.0) {
-        discard;
-    }
-    vec3 rgb = fill.rgb;
-    if (outlined) {
-        rgb = mix(rgb, rgb * 0.625, clamp(2.0 * (d + 1.0), 0.0, 1.0));
-    }
-    colour = vec4(rgb, fill.a * alpha);
-}
-)";
-
-// Void cells: world-space vertices with a colour, drawn at a periodic-image shift.
-constexpr const char* kFlatVertexShader = R"(#version 330 core
-layout(location = 0) in vec2 world; // x1, x2 [m]
-layout(location = 1) in vec4 colour;
-uniform vec2 origin;
-uniform float scale;
-uniform vec2 viewport;
-uniform vec2 shift; // periodic image [m]
-flat out vec4 fill;
-void main() {
-    vec2 w = world + shift;
-    vec2 screen = vec2(origin.x + scale * w.y, origin.y - scale * w.x);
-    gl_Position = vec4(screen.x / viewport.x * 2.0 - 1.0, 1.0 - screen.y / viewport.y * 2.0, 0.0, 1.0);
-    fill = colour;
-}
-)";
-
-constexpr const char* kFlatFragmentShader = R"(#version 330 core
-flat in vec4 fill;
-out vec4 colour;
-void main() {
-    colour = fill;
-}
-)";
-
 // Force chains: one quad per segment, grown by half the width and a pixel around it; the
 // fragment shader keeps what lies within half the width of the segment (round caps), with a
 // one-pixel antialiased edge, as QPainter's round-capped pen.
@@ -119,51 +37,6 @@ struct ChainInstance {
     float width;          ///< [pixel]
     std::uint8_t rgba[4];
 };
-
-constexpr const char* kChainVertexShader = R"(#version 330 core
-layout(location = 0) in vec2 corner;
-layout(location = 1) in vec4 ends;  // a1, a2, b1, b2 [m]
-layout(location = 2) in float width; // [px]
-layout(location = 3) in vec4 colour;
-uniform vec2 origin;
-uniform float scale;
-uniform vec2 viewport;
-out vec2 pixel;
-flat out vec2 a;
-flat out vec2 b;
-flat out float halfWidth;
-flat out vec4 fill;
-void main() {
-    a = vec2(origin.x + scale * ends.y, origin.y - scale * ends.x);
-    b = vec2(origin.x + scale * ends.w, origin.y - scale * ends.z);
-    halfWidth = 0.5 * width;
-    float len = length(b - a);
-    vec2 u = len > 1e-6 ? (b - a) / len : vec2(1.0, 0.0);
-    vec2 n = vec2(-u.y, u.x);
-    float reach = halfWidth + 1.0;
-    pixel = 0.5 * (a + b) + u * corner.x * (0.5 * len + reach) + n * corner.y * reach;
-    gl_Position = vec4(pixel.x / viewport.x * 2.0 - 1.0, 1.0 - pixel.y / viewport.y * 2.0, 0.0, 1.0);
-    fill = colour;
-}
-)";
-
-constexpr const char* kChainFragmentShader = R"(#version 330 core
-in vec2 pixel;
-flat in vec2 a;
-flat in vec2 b;
-flat in float halfWidth;
-flat in vec4 fill;
-out vec4 colour;
-void main() {
-    vec2 pa = pixel - a, ba = b - a;
-    float t = clamp(dot(pa, ba) / max(dot(ba, ba), 1e-12), 0.0, 1.0);
-    float alpha = clamp(halfWidth + 0.5 - length(pa - ba * t), 0.0, 1.0);
-    if (alpha <= 0.0) {
-        discard;
-    }
-    colour = vec4(fill.rgb, fill.a * alpha);
-}
-)";
 
 void toBytes(QRgb c, std::uint8_t rgba[4]) {
     rgba[0] = std::uint8_t(qRed(c));
@@ -180,6 +53,7 @@ const void* byteOffset(std::size_t bytes) {
 
 GlSceneLayer::GlSceneLayer(const SceneRenderer& renderer, QWidget* parent)
     : QOpenGLWidget(parent), renderer_(renderer) {
+    initShaderResources();
     QSurfaceFormat format = QSurfaceFormat::defaultFormat();
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
@@ -203,9 +77,12 @@ GlSceneLayer::~GlSceneLayer() {
 
 bool GlSceneLayer::buildProgram(QOpenGLShaderProgram& program, const char* vertex,
                                 const char* fragment) {
-    if (!program.addShaderFromSourceCode(QOpenGLShader::Vertex, vertex) ||
-        !program.addShaderFromSourceCode(QOpenGLShader::Fragment, fragment) || !program.link()) {
-        failure_ = program.log();
+    if (!program.addShaderFromSourceFile(QOpenGLShader::Vertex, QString::fromLatin1(vertex)) ||
+        !program.addShaderFromSourceFile(QOpenGLShader::Fragment, QString::fromLatin1(fragment)) ||
+        !program.link()) {
+        failure_ =
+            QStringLiteral("%1 + %2: %3")
+                .arg(QString::fromLatin1(vertex), QString::fromLatin1(fragment), program.log());
         return false;
     }
     return true;
@@ -213,9 +90,14 @@ bool GlSceneLayer::buildProgram(QOpenGLShaderProgram& program, const char* verte
 
 void GlSceneLayer::initializeGL() {
     initializeOpenGLFunctions();
-    if (!buildProgram(program_, kVertexShader, kFragmentShader) ||
-        !buildProgram(flatProgram_, kFlatVertexShader, kFlatFragmentShader) ||
-        !buildProgram(chainProgram_, kChainVertexShader, kChainFragmentShader)) {
+    // The GLSL sources are resources/shaders/*.vert and *.frag, compiled into the library
+    // (resources/shaders/shaders.qrc): the grains as instanced quads cut to the oval by its
+    // signed distance; void cells as world-space triangles at a periodic-image shift; force
+    // chains as round-capped segment quads.
+    if (!buildProgram(program_, ":/shaders/grains.vert", ":/shaders/grains.frag") ||
+        !buildProgram(flatProgram_, ":/shaders/void_cells.vert", ":/shaders/void_cells.frag") ||
+        !buildProgram(chainProgram_, ":/shaders/force_chains.vert",
+                      ":/shaders/force_chains.frag")) {
         return;
     }
     vao_.create();

@@ -10,6 +10,7 @@
 
 #include <QPainter>
 
+#include "grainlab/measures.h"
 #include "grainlab/ui/colour_maps.h"
 
 namespace grainlab::ui {
@@ -20,43 +21,6 @@ constexpr int kRoseBins = 18;
 constexpr int kChainBins = 64;         ///< force bins between 0 and the largest force
 constexpr int kAreaColourSteps = 128;  ///< colours of void cells by area
 constexpr double kRotationSteps = 128; ///< colours of grains per sign of rotation
-
-/// Grains of the load-bearing graph (SPEC §4): drop grains without contacts, then repeatedly
-/// those with a single remaining contact.
-std::vector<std::uint8_t> loadBearingGrains(const ContactNetwork& net, std::size_t grains) {
-    std::vector<int> degree(grains, 0);
-    std::vector<std::vector<int>> neighbours(grains);
-    for (const auto& c : net.contacts) {
-        if (c.first == c.second) {
-            continue;
-        }
-        ++degree[c.first];
-        ++degree[c.second];
-        neighbours[c.first].push_back(c.second);
-        neighbours[c.second].push_back(c.first);
-    }
-    std::vector<std::uint8_t> alive(grains, 1);
-    std::vector<int> queue;
-    for (std::size_t g = 0; g < grains; ++g) {
-        if (degree[g] <= 1) {
-            queue.push_back(static_cast<int>(g));
-        }
-    }
-    while (!queue.empty()) {
-        const int g = queue.back();
-        queue.pop_back();
-        if (!alive[g]) {
-            continue;
-        }
-        alive[g] = 0;
-        for (int n : neighbours[g]) {
-            if (alive[n] && --degree[n] <= 1) {
-                queue.push_back(n);
-            }
-        }
-    }
-    return alive;
-}
 
 } // namespace
 
@@ -100,7 +64,6 @@ void SceneRenderer::setSnapshot(SnapshotPtr snapshot) {
     const auto& contacts = s.network.contacts;
     coordination_.assign(n, 0);
     forceMagnitude_.resize(contacts.size());
-    double sumSquares = 0.0;
     for (std::size_t c = 0; c < contacts.size(); ++c) {
         const auto& r = contacts[c];
         if (r.first >= 0 && static_cast<std::size_t>(r.first) < n) {
@@ -111,7 +74,6 @@ void SceneRenderer::setSnapshot(SnapshotPtr snapshot) {
         }
         const auto f = r.force();
         forceMagnitude_[c] = std::hypot(f[0], f[1]);
-        sumSquares += forceMagnitude_[c] * forceMagnitude_[c];
         maxForce_ = std::max(maxForce_, forceMagnitude_[c]);
         double alpha = std::atan2(r.normal2, r.normal1);
         if (alpha < 0.0) {
@@ -119,8 +81,15 @@ void SceneRenderer::setSnapshot(SnapshotPtr snapshot) {
         }
         roseCounts_[std::min(kRoseBins - 1, static_cast<int>(alpha / kPi * kRoseBins))] += 1.0;
     }
-    loadBearing_ = s.loadBearing.size() == n ? s.loadBearing : loadBearingGrains(s.network, n);
-    strongThreshold_ = contacts.empty() ? 0.0 : std::sqrt(sumSquares / double(contacts.size()));
+    // The engine's rules (measures.h): the load-bearing graph when the snapshot was taken without
+    // its measures, and the strong-force threshold f_a.
+    if (s.loadBearing.size() == n) {
+        loadBearing_ = s.loadBearing;
+    } else {
+        loadBearing_ = loadBearingGraph(s.network).grainInGraph;
+        loadBearing_.resize(n, 0);
+    }
+    strongThreshold_ = grainlab::strongForceThreshold(s.network, StrongForceThreshold::RmsForce);
     forceOrder_.resize(contacts.size());
     for (std::size_t c = 0; c < contacts.size(); ++c) {
         forceOrder_[c] = static_cast<std::int32_t>(c);

@@ -145,7 +145,8 @@ public:
     const QPolygonF& voidCellPolygon(int index) const { return voidPolygons_[index]; }
     /// Number of contacts of each grain (from the snapshot's network).
     const std::vector<int>& coordination() const { return coordination_; }
-    /// Strong-contact threshold f_a = sqrt(sum |f|^2 / N_c) (SPEC §4) [N].
+    /// Strong-contact threshold f_a = sqrt(sum |f|^2 / N_c): the engine's strongForceThreshold
+    /// (RmsForce) [N].
     double strongForceThreshold() const { return strongThreshold_; }
     /// Is world point (x1, x2) inside grain `grain` placed at centre (c1, c2)?
     bool grainContains(int grain, double c1, double c2, double x1, double x2) const;
@@ -178,7 +179,7 @@ private:
     ViewTransform view_;
     // Derived from the snapshot.
     std::vector<int> coordination_;
-    std::vector<std::uint8_t> loadBearing_; ///< the snapshot's, or computed when it has none
+    std::vector<std::uint8_t> loadBearing_; ///< the snapshot's, or the engine's loadBearingGraph
     std::vector<double> forceMagnitude_;    ///< per contact [N]
     std::vector<std::int32_t> forceOrder_;  ///< contacts by increasing force
     /// Runs of forceOrder_ drawn with one pen: equal force bins, split at the strong threshold.

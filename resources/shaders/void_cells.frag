@@ -1,0 +1,7 @@
+#version 330 core
+// Void cells: flat colour.
+flat in vec4 fill;
+out vec4 colour;
+void main() {
+    colour = fill;
+}
