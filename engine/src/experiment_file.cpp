@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grainlab/oval_shape.h"
-#include "grainlab/simulation.h"
+#include "grainlab/time_step.h"
 
 namespace grainlab {
 
