@@ -8,30 +8,14 @@
 
 #include <fmt/format.h>
 
+#include "fast_trig.h"
 #include "grainlab/contact_geometry.h"
 #include "grainlab/contact_law.h"
 #include "grainlab/periodic_cell.h"
-#include "fast_trig.h"
+#include "grainlab/time_step.h"
 
 namespace grainlab {
 namespace {
-
-
-/// Disk-disk geometry as diskContact computes it, without its branch (a coincident pair, which
-/// diskContact reports as not touching, is excluded by the caller's d^2 > 0 test). `reach` is
-/// radiusA + radiusB.
-inline ContactGeometry diskGeometry(double radiusA, double reach, double dx, double dy) {
-    ContactGeometry g;
-    const double distance = std::sqrt(dx * dx + dy * dy);
-    const double inv = 1.0 / std::max(distance, std::numeric_limits<double>::min());
-    g.overlap = reach - distance;
-    g.normalX = dx * inv;
-    g.normalY = dy * inv;
-    const double towardPoint = radiusA - 0.5 * g.overlap;
-    g.pointX = towardPoint * g.normalX;
-    g.pointY = towardPoint * g.normalY;
-    return g;
-}
 
 /// What one touching (or open) pair contributes: forces, torques, history and the sums.
 struct PairResponse {
@@ -49,19 +33,21 @@ struct PairKinematics {
     double L0, L1, L2, L3;                     ///< velocity gradient, column-major [1/s]
 };
 
-/// The contact law for one pair (SPEC §3.3): linearContactForce's arithmetic, written so that
-/// every operation is done unconditionally and the cases are chosen by selects. GCC keeps
-/// -ftrapping-math, so it does not if-convert (vectorise) a loop whose arithmetic sits under a
-/// condition. Used by the vectorised pair loop and the scalar reference path alike.
-/// `inverseKt` = 1 / k_t (0 when frictionless).
+/// What one pair contributes: the contact law (linearContactForce) applied along the pair's
+/// geometry, turned into forces, torques and the stress sums. Every operation is done
+/// unconditionally and the cases are chosen by selects (see linearContactForce), so that the pair
+/// loop vectorises. Used by the vectorised pair loop and the scalar reference path alike.
+/// Without `Increment` (re-evaluating a restored state) the stored tangential force is taken as
+/// it is.
 template <bool Frictional, bool Increment>
 inline PairResponse respond(const ContactGeometry& c, bool touching, double l1, double l2,
                             double stored, const PairKinematics& k, const ContactLawParameters& law,
-                            double kt, double inverseKt) {
+                            double kt) {
     PairResponse r;
     const double n1 = c.normalX, n2 = c.normalY, t1 = -n2, t2 = n1;
-    const double elastic = law.normalStiffness * c.overlap;
-    const double fn = touching ? elastic : 0.0;
+    // The pair loop's order of operations is part of the result's bits (the compiler fuses
+    // multiply-adds by it): the normal force first, then the tangential force.
+    const double fn = touching ? normalContactForce(c.overlap, law) : 0.0;
     double ft = 0.0;
     if constexpr (Frictional) {
         if constexpr (Increment) {
@@ -73,18 +59,13 @@ inline PairResponse respond(const ContactGeometry& c, bool touching, double l1, 
                 k.v1B - k.v1A + k.L0 * l1 + k.L2 * l2 - k.omegaB * pB2 + k.omegaA * pA2;
             const double vr2 =
                 k.v2B - k.v2A + k.L1 * l1 + k.L3 * l2 + k.omegaB * pB1 - k.omegaA * pA1;
-            // Increment Delta f_t = -k_t Delta u_t; at the Coulomb limit the elastic part is
-            // scaled back and the excess displacement (|trial| - limit) / k_t slid against it.
-            const double trial =
-                stored - law.tangentialStiffness * (vr1 * t1 + vr2 * t2) * law.timeStep;
-            const double limit = law.friction * fn;
-            const double size = std::fabs(trial);
-            const double clipped = std::copysign(limit, trial);
-            const double slid = limit * (size - limit) * inverseKt;
-            const bool slide = size > limit;
-            ft = touching ? (slide ? clipped : trial) : 0.0;
-            r.sliding = touching & slide;
-            r.slipWork = (touching & slide) ? slid : 0.0;
+            ContactForce f;
+            tangentialContactForce(fn, vr1 * t1 + vr2 * t2, stored, law, f);
+            ft = touching ? f.tangential : 0.0;
+            r.sliding = touching & f.sliding;
+            // One select on both conditions: GCC 12 turns a nested select here into control
+            // flow.
+            r.slipWork = (touching & f.sliding) ? f.slipWork : 0.0;
         } else {
             ft = touching ? stored : 0.0;
         }
@@ -115,55 +96,6 @@ SimulationError::SimulationError(std::int64_t step_, std::int32_t grain_, std::s
     : std::runtime_error(grain_ >= 0 ? fmt::format("step {}: grain {}: {}", step_, grain_, cause_)
                                      : fmt::format("step {}: {}", step_, cause_)),
       step(step_), grain(grain_), cause(std::move(cause_)) {}
-
-TimeStepLimit criticalTimeStep(const std::vector<OvalShape>& shapes,
-                               const SimulationParameters& p) {
-    // Central differences are stable for omega_max * dt < 2. The stiffest grain with z contacts
-    // has a translational stiffness z * max(k_n, k_t) and a rotational stiffness of at most
-    // z * max(k_n, k_t) * a^2 (every contact force has a lever arm of at most a).
-    TimeStepLimit out;
-    out.translational = out.rotational = std::numeric_limits<double>::infinity();
-    const double k = std::max(p.normalStiffness, p.tangentialStiffness) *
-                     std::max(1, p.stability.designCoordination);
-    for (std::size_t i = 0; i < shapes.size(); ++i) {
-        const OvalShape& s = shapes[i];
-        const double m = p.density * s.area, inertia = p.density * s.polarMoment;
-        const double t = 2.0 * std::sqrt(m / k);
-        const double r = 2.0 * std::sqrt(inertia / (k * s.halfWidth * s.halfWidth));
-        out.translational = std::min(out.translational, t);
-        if (r < out.rotational) {
-            out.rotational = r;
-        }
-        if (std::min(t, r) < out.limit || i == 0) {
-            out.limit = std::min(t, r);
-            out.stiffestShape = static_cast<int>(i);
-        }
-    }
-    out.limit = std::min(out.translational, out.rotational);
-    return out;
-}
-
-std::string checkTimeStep(const std::vector<OvalShape>& shapes, const SimulationParameters& p) {
-    const TimeStepLimit lim = criticalTimeStep(shapes, p);
-    const double dt = p.timeStep;
-    if (!(dt > 0.0) || !std::isfinite(dt)) {
-        throw std::invalid_argument(fmt::format("time step {} s: must be > 0", dt));
-    }
-    const auto describe = [&] {
-        return fmt::format("the stable limit is {:.4g} s (translational {:.4g} s, rotational "
-                           "{:.4g} s, set by the grain of width {:.4g} m with {} contacts)",
-                           lim.limit, lim.translational, lim.rotational,
-                           shapes[lim.stiffestShape].width, p.stability.designCoordination);
-    };
-    if (dt > lim.limit) {
-        throw std::invalid_argument(fmt::format(
-            "time step {:.4g} s is above {}; use at most {:.4g} s", dt, describe(), lim.limit));
-    }
-    if (dt > 0.8 * lim.limit) {
-        return fmt::format("time step {:.4g} s is within 20 % of {}", dt, describe());
-    }
-    return {};
-}
 
 Simulation::Simulation(SimulationState state) : s_(std::move(state)) {
     const std::size_t n = s_.grains.size();
@@ -280,7 +212,7 @@ void Simulation::evaluateForces(bool increment) {
 ContactGeometry Simulation::pairGeometry(std::size_t p, double l1, double l2) const {
     const std::int32_t i = s_.pairs.first[p], j = s_.pairs.second[p];
     if (allDisks_) {
-        return diskGeometry(halfWidth_[i], pairReach_[p], l1, l2);
+        return diskContact(halfWidth_[i], pairReach_[p], l1, l2);
     }
     const OvalShape& A = s_.shapes[s_.grains.shape[i]];
     const OvalShape& B = s_.shapes[s_.grains.shape[j]];
@@ -295,10 +227,10 @@ template <bool Disk, bool Frictional, bool Increment>
 void Simulation::pairForces() {
     const std::size_t pairCount = s_.pairs.size();
     const int blocks = reductionBlocks(pairCount);
-    const ContactLawParameters law{s_.parameters.normalStiffness, s_.parameters.tangentialStiffness,
-                                   s_.parameters.friction, s_.parameters.timeStep};
+    const ContactLawParameters law =
+        contactLawParameters(s_.parameters.normalStiffness, s_.parameters.tangentialStiffness,
+                             s_.parameters.friction, s_.parameters.timeStep);
     const double kt = Frictional ? law.tangentialStiffness : 0.0;
-    const double inverseKt = kt > 0.0 ? 1.0 / kt : 0.0;
     const bool fullOvalTest = s_.parameters.allArcPairs;
     const double overlapLimit = s_.parameters.stability.maxOverlapFraction;
     const double h0 = s_.cell[0], h1 = s_.cell[1], h2 = s_.cell[2], h3 = s_.cell[3];
@@ -366,7 +298,7 @@ void Simulation::pairForces() {
             // No aggregate is copied in this loop: GCC 12 vectorises none that does.
             const QuadrantContact q = [&] {
                 if constexpr (Disk) {
-                    return QuadrantContact{diskGeometry(halfWidth[i], reach, l1, l2), false};
+                    return QuadrantContact{diskContact(halfWidth[i], reach, l1, l2), false};
                 } else {
                     return ovalContactQuadrant(
                         endOffset[i], sideOffset[i], endRadius[i], sideRadius[i], cosJ[i], sinJ[i],
@@ -384,8 +316,7 @@ void Simulation::pairForces() {
             const double v1B = v1[j], v2B = v2[j], omegaB = omega[j];
             const PairResponse r = respond<Frictional, Increment>(
                 c, touching, l1, l2, old,
-                PairKinematics{v1A, v2A, omegaA, v1B, v2B, omegaB, L0, L1, L2, L3}, law, kt,
-                inverseKt);
+                PairKinematics{v1A, v2A, omegaA, v1B, v2B, omegaB, L0, L1, L2, L3}, law, kt);
             // A deferred pair keeps its history for the reference path below.
             stored[p] = reference ? old : r.tangential;
             slides[p - begin] = r.sliding ? 1.0 : 0.0;
@@ -426,7 +357,7 @@ void Simulation::pairForces() {
                     c = ContactGeometry{0.0, 1.0, 0.0, 0.0, 0.0}; // finite numbers for the law
                 }
                 const PairResponse r = respond<Frictional, Increment>(
-                    c, touching, l1, l2, stored[p], kinematics(i, j), law, kt, inverseKt);
+                    c, touching, l1, l2, stored[p], kinematics(i, j), law, kt);
                 stored[p] = r.tangential;
                 slides[p - begin] = r.sliding ? 1.0 : 0.0;
                 force1[p] = r.force1;

@@ -127,7 +127,7 @@ TEST(Collision, LoadedChainReachesSpringForce) {
 }
 
 TEST(ContactLaw, TangentialForceGrowsThenSlidesAtCoulombLimit) {
-    ContactLawParameters p{1e8, 1e8, 0.5, 1e-6};
+    const ContactLawParameters p = contactLawParameters(1e8, 1e8, 0.5, 1e-6);
     const double overlap = 1e-6; // f_n = 100 N, limit 50 N
     const double vt = 0.1;       // each step: -k_t vt dt = -10 N
     double ft = 0;

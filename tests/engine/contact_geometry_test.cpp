@@ -228,7 +228,7 @@ TEST(ContactGeometry, DiskThroughOvalKernelEqualsDiskKernel) {
         const double distance = (a.halfWidth + b.halfWidth) * random.uniform(0.9, 1.01);
         const double dx = distance * std::cos(angle), dy = distance * std::sin(angle);
         const double ta = random.uniform(-kPi, kPi), tb = random.uniform(-kPi, kPi);
-        const ContactGeometry disk = diskContact(a.halfWidth, b.halfWidth, dx, dy);
+        const ContactGeometry disk = diskContact(a.halfWidth, a.halfWidth + b.halfWidth, dx, dy);
         const ContactGeometry oval =
             ovalContact(a, std::cos(ta), std::sin(ta), b, std::cos(tb), std::sin(tb), dx, dy);
         ASSERT_NEAR(oval.overlap, disk.overlap, 1e-18);

@@ -10,6 +10,7 @@
 
 #include "grainlab/contact_geometry.h"
 #include "grainlab/periodic_cell.h"
+#include "grainlab/time_step.h"
 #include "scenes.h"
 
 namespace grainlab {

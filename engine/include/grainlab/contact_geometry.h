@@ -1,6 +1,7 @@
 #pragma once
-// Narrow-phase contact geometry (SPEC §3.2): disks, and ovals by admissible arc pairs with the
-// minimum-overlap rule. Small inline functions of plain numbers, called per neighbour pair in
+// Narrow-phase contact geometry: disks, and ovals by admissible arc pairs with the minimum-overlap
+// rule (of the arc pairs whose common normal lies in both arcs' angular ranges, the one with the
+// smallest overlap decides). Small inline functions of plain numbers, called per neighbour pair in
 // the hot loop on the engine's threads, and by the tests against brute force.
 //
 // Conventions: A is the first grain, B the second at the periodic image nearest to A; (dx, dy)
@@ -23,15 +24,15 @@ struct ContactGeometry {
     double pointY = 0;
 };
 
-/// Disk-disk contact: one arc each, always admissible.
-inline ContactGeometry diskContact(double radiusA, double radiusB, double dx, double dy) {
+/// Disk-disk contact: one arc each, always admissible. `radiusSum` = r_A + r_B [m] (the pair loop
+/// keeps it per pair). Written without branches, so that the engine's pair loop vectorises: a
+/// coincident pair (distance 0) gets a zero normal and must be excluded by the caller (the pair
+/// loop tests d^2 > 0); every number stays finite.
+inline ContactGeometry diskContact(double radiusA, double radiusSum, double dx, double dy) {
     ContactGeometry g;
     const double distance = std::sqrt(dx * dx + dy * dy);
-    if (distance <= 0.0) {
-        return g;
-    }
-    const double inv = 1.0 / distance;
-    g.overlap = radiusA + radiusB - distance;
+    const double inv = 1.0 / std::max(distance, std::numeric_limits<double>::min());
+    g.overlap = radiusSum - distance;
     g.normalX = dx * inv;
     g.normalY = dy * inv;
     const double reach = radiusA - 0.5 * g.overlap;

@@ -1,27 +1,22 @@
 #pragma once
-// The experiment file (JSON, SI units): reads and validates it into an ExperimentConfig. Every
+// The experiment file (JSON, SI units): reads and validates it, through the strict reader of
+// strict_json.h, into an ExperimentConfig. Every
 // key is documented in docs/experiment-file.md. Nothing is guessed or clamped: an unknown key, a
 // missing required key, a wrong type or a value out of range is an ExperimentFileError that
 // names the file, the key path, the value and what is allowed. Called once before a run, on the
 // caller's thread (the CLI's main thread or the GUI's thread when a file is opened); pure
 // functions, safe on any thread.
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "grainlab/experiment.h"
+#include "grainlab/strict_json.h"
 
 namespace grainlab {
 
-/// A bad experiment file. what() reads like
-/// `reference.json: grains.aspect_ratio = 1.5: must be a number in (0, 1]`.
-class ExperimentFileError : public std::runtime_error {
-public:
-    ExperimentFileError(std::string file, std::string keyPath, const std::string& message);
-    std::string file;    ///< the file (or source name) at fault
-    std::string keyPath; ///< dotted key path, e.g. "grains.aspect_ratio" ("" for the whole file)
-};
+/// A bad experiment file (names the file and the key path; see strict_json.h).
+using ExperimentFileError = JsonFileError;
 
 /// Reads and validates an experiment file. sourcePath is `path`, sourceText the file's text.
 ExperimentConfig readExperimentFile(const std::string& path);

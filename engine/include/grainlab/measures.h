@@ -16,7 +16,7 @@
 
 #include "grainlab/contact_network.h"
 #include "grainlab/series.h"
-#include "grainlab/simulation.h"
+#include "grainlab/stress_and_energies.h"
 #include "grainlab/void_cells.h"
 
 namespace grainlab {

@@ -16,6 +16,7 @@
 #include "grainlab/contact_network.h"
 #include "grainlab/periodic_cell.h"
 #include "grainlab/simulation_state.h"
+#include "grainlab/stress_and_energies.h"
 
 namespace grainlab {
 
@@ -26,34 +27,6 @@ public:
     std::int64_t step;  ///< the step at which the failure was detected
     std::int32_t grain; ///< the grain at fault (-1 if none in particular)
     std::string cause;
-};
-
-/// The critical time step estimate (SPEC §3.7) for a shape table and parameters.
-struct TimeStepLimit {
-    double translational = 0; ///< 2 sqrt(m_min / k_eff) [s]
-    double rotational = 0;    ///< 2 sqrt(I_min / K_theta) [s]
-    double limit = 0;         ///< the smaller of the two [s]
-    int stiffestShape = 0;    ///< shape index that sets the limit
-};
-TimeStepLimit criticalTimeStep(const std::vector<OvalShape>& shapes,
-                               const SimulationParameters& parameters);
-
-/// Refuses a time step above the stable limit (throws std::invalid_argument naming the limit);
-/// returns a warning text when it is within 20 % of it, an empty string otherwise.
-std::string checkTimeStep(const std::vector<OvalShape>& shapes,
-                          const SimulationParameters& parameters);
-
-/// Symmetric Love-Weber stress, compression positive [Pa].
-struct Stress {
-    double s11 = 0, s22 = 0, s12 = 0;
-};
-
-struct Energies {
-    double kinetic = 0;      ///< fluctuating translational + rotational [J]
-    double elastic = 0;      ///< spring energy of the contacts [J]
-    double boundaryWork = 0; ///< work done by the cell on the assembly [J]
-    double frictionWork = 0; ///< cumulative sliding dissipation [J]
-    double dampingWork = 0;  ///< cumulative damping dissipation [J]
 };
 
 class Simulation {
