@@ -9,12 +9,12 @@
 
 #include "grainlab/experiment_file.h"
 #include "grainlab/oval_shape.h"
-#include "grainlab/simulation.h"
+#include "grainlab/time_step.h"
 
 namespace grainlab {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json; // keeps the base file's key order
 
 struct KnobInfo {
     KnobKind kind;
@@ -64,9 +64,9 @@ double meanDiameter(const ExperimentConfig& c) {
     return sum / n;
 }
 
-Json& child(Json& j, const char* key) {
+OrderedJson& child(OrderedJson& j, const char* key) {
     if (!j.contains(key) || !j[key].is_object()) {
-        j[key] = Json::object();
+        j[key] = OrderedJson::object();
     }
     return j[key];
 }
@@ -106,7 +106,7 @@ std::string KnobLevel::label() const {
     if (object.empty()) {
         return fmt::format("{}", number);
     }
-    const Json j = Json::parse(object);
+    const OrderedJson j = OrderedJson::parse(object);
     if (j.contains("kind")) { // damping
         const std::string kind = j["kind"];
         return j.contains("coefficient") ? fmt::format("{}-{}", kind, j["coefficient"].dump())
@@ -125,7 +125,7 @@ std::string KnobLevel::label() const {
 
 std::string applySetting(const std::string& baseText, const std::string& baseSource,
                          const std::map<KnobKind, KnobLevel>& levels, std::uint64_t seed) {
-    Json j = Json::parse(baseText);
+    OrderedJson j = OrderedJson::parse(baseText);
     j["seed"] = seed;
     for (const auto& [kind, level] : levels) {
         switch (kind) {
@@ -133,14 +133,14 @@ std::string applySetting(const std::string& baseText, const std::string& baseSou
             child(j, "shear")["axial_strain_per_step"] = level.number;
             break;
         case KnobKind::Damping:
-            j["damping"] = Json::parse(level.object);
+            j["damping"] = OrderedJson::parse(level.object);
             break;
         case KnobKind::GrainCount:
             child(j, "grains")["count"] = static_cast<std::int64_t>(std::llround(level.number));
             break;
         case KnobKind::Shape: {
-            Json& grains = child(j, "grains");
-            const Json shape = Json::parse(level.object);
+            OrderedJson& grains = child(j, "grains");
+            const OrderedJson shape = OrderedJson::parse(level.object);
             if (!shape.contains("end_radius_ratio")) {
                 grains.erase("end_radius_ratio");
             }
@@ -168,7 +168,7 @@ std::string applySetting(const std::string& baseText, const std::string& baseSou
     if (fraction != levels.end() || inertial != levels.end() || skin != levels.end()) {
         // Read the configuration as set so far; a tiny time step passes the stability check
         // whatever the shapes, and is replaced below.
-        Json probe = j;
+        OrderedJson probe = j;
         if (fraction != levels.end()) {
             probe["time_step"] = 1e-15;
         }

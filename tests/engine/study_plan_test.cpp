@@ -10,7 +10,7 @@
 
 #include "grainlab/experiment_file.h"
 #include "grainlab/oval_shape.h"
-#include "grainlab/simulation.h"
+#include "grainlab/time_step.h"
 #include "grainlab/study_plan.h"
 
 namespace grainlab {
