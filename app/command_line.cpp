@@ -63,6 +63,7 @@ int runCommandLine(int argc, char** argv) {
     auto* collectCommand = studyCommand->add_subcommand(
         "collect", "summarise a study folder whose runs were run elsewhere (Slurm, GNU parallel)");
     collectCommand->add_option("folder", collectFolder, "the study folder")->required();
+    collectCommand->add_flag("--quiet", study.quiet, "print nothing but errors");
 
     std::string experiment = std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json";
     app.add_option("--experiment", experiment, "experiment to open in the window");

@@ -18,7 +18,8 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
     const std::string temporary = path + ".tmp";
     const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) {
-        throw std::runtime_error(fmt::format("{}: cannot write: {}", temporary, std::strerror(errno)));
+        throw std::runtime_error(
+            fmt::format("{}: cannot write: {}", temporary, std::strerror(errno)));
     }
     std::size_t done = 0;
     while (done < text.size()) {
@@ -30,7 +31,8 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
             const int e = errno;
             ::close(fd);
             ::unlink(temporary.c_str());
-            throw std::runtime_error(fmt::format("{}: cannot write: {}", temporary, std::strerror(e)));
+            throw std::runtime_error(
+                fmt::format("{}: cannot write: {}", temporary, std::strerror(e)));
         }
         done += std::size_t(n);
     }

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "cli/progress_bar.h"
+#include "cli/run_cost.h"
 #include "cli/run_output.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
@@ -46,6 +47,13 @@ int runExperimentCommand(const RunOptions& options) {
         resume ? std::make_unique<ExperimentRunner>(config, std::move(point), &output)
                : std::make_unique<ExperimentRunner>(config, &output);
 
+    // What the run costs, beside its run file (cost.json), for the study commands.
+    RunCostMeter cost(folder, resume);
+    const auto saveCost = [&](bool finished) {
+        cost.save(runner->stepsTaken(), config.assembly.grainCount,
+                  runner->simulation().stateRef().parameters.threads, finished);
+    };
+
     interrupted.store(false);
     auto previous = std::signal(SIGINT, onInterrupt);
     auto previousTerm = std::signal(SIGTERM, onInterrupt);
@@ -56,8 +64,11 @@ int runExperimentCommand(const RunOptions& options) {
     int status = 0;
     try {
         while (runner->advance(200)) {
+            cost.saveEvery(5.0, runner->stepsTaken(), config.assembly.grainCount,
+                           runner->simulation().stateRef().parameters.threads);
             if (interrupted.load()) {
                 runner->checkpointNow("interrupted");
+                saveCost(false);
                 bar.finish();
                 fmt::print(stderr,
                            "grainlab run: interrupted; the run file and series are valid and a "
@@ -81,12 +92,18 @@ int runExperimentCommand(const RunOptions& options) {
             }
         }
         if (status == 0) {
+            saveCost(true);
             bar.update(1.0, "done");
             bar.finish();
             fmt::print("grainlab run: finished; outputs in {}\n", folder);
         }
     } catch (const std::exception& e) {
         bar.finish();
+        try {
+            saveCost(false);
+        } catch (const std::exception&) {
+            // The error below is what matters; a cost record that cannot be written is not.
+        }
         std::signal(SIGINT, previous);
         std::signal(SIGTERM, previousTerm);
         fmt::print(stderr,

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <sys/resource.h>
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -50,6 +52,48 @@ void writeRunCost(const std::string& runFolder, const RunCostRecord& c) {
     j["threads"] = c.threads;
     j["processes"] = c.processes;
     writeFileAtomically(runCostPath(runFolder), j.dump(2) + "\n");
+}
+
+RunCostMeter::RunCostMeter(std::string runFolder, bool continuing)
+    : folder_(std::move(runFolder)), start_(std::chrono::steady_clock::now()), lastSave_(start_) {
+    if (continuing) {
+        before_ = readRunCost(folder_);
+    }
+}
+
+namespace {
+
+double processorSeconds() {
+    rusage usage{};
+    ::getrusage(RUSAGE_SELF, &usage);
+    const auto seconds = [](const timeval& t) {
+        return double(t.tv_sec) + 1e-6 * double(t.tv_usec);
+    };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+} // namespace
+
+void RunCostMeter::save(std::int64_t steps, std::int64_t grains, int threads, bool finished) {
+    const auto now = std::chrono::steady_clock::now();
+    RunCostRecord c = before_;
+    c.finished = finished;
+    c.wallSeconds += std::chrono::duration<double>(now - start_).count();
+    c.cpuSeconds += processorSeconds();
+    c.steps += steps;
+    c.grainSteps += steps * grains;
+    c.threads = threads;
+    c.processes += 1;
+    writeRunCost(folder_, c);
+    lastSave_ = now;
+}
+
+void RunCostMeter::saveEvery(double interval, std::int64_t steps, std::int64_t grains,
+                             int threads) {
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - lastSave_).count() >= interval) {
+        save(steps, grains, threads, false);
+    }
 }
 
 } // namespace grainlab

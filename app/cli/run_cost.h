@@ -5,19 +5,20 @@
 // and whether the run has finished. The study commands read it; a user can too (docs/formats.md).
 // Main thread.
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 
 namespace grainlab {
 
 struct RunCostRecord {
-    bool finished = false;        ///< the experiment ran to its end
-    double wallSeconds = 0;       ///< [s], summed over processes
-    double cpuSeconds = 0;        ///< user + system time of every thread [s], summed
-    std::int64_t steps = 0;       ///< time steps computed, summed (repeated work included)
-    std::int64_t grainSteps = 0;  ///< steps times grains stepped
-    int threads = 0;              ///< engine threads of the last process
-    int processes = 0;            ///< processes that worked on the run
+    bool finished = false;       ///< the experiment ran to its end
+    double wallSeconds = 0;      ///< [s], summed over processes
+    double cpuSeconds = 0;       ///< user + system time of every thread [s], summed
+    std::int64_t steps = 0;      ///< time steps computed, summed (repeated work included)
+    std::int64_t grainSteps = 0; ///< steps times grains stepped
+    int threads = 0;             ///< engine threads of the last process
+    int processes = 0;           ///< processes that worked on the run
 };
 
 /// cost.json in `runFolder`; all zeros (not finished) when there is none. Throws
@@ -29,5 +30,22 @@ void writeRunCost(const std::string& runFolder, const RunCostRecord& cost);
 
 /// The path of cost.json in `runFolder`.
 std::string runCostPath(const std::string& runFolder);
+
+/// Keeps cost.json of one run folder up to date while this process works on the run: what
+/// earlier processes spent (read at construction when continuing a run) plus this process's
+/// wall time, processor time (all its threads) and steps.
+class RunCostMeter {
+public:
+    RunCostMeter(std::string runFolder, bool continuing);
+    /// Writes cost.json now. `steps` are this process's steps so far.
+    void save(std::int64_t steps, std::int64_t grains, int threads, bool finished);
+    /// Writes it when `interval` seconds have passed since the last write.
+    void saveEvery(double interval, std::int64_t steps, std::int64_t grains, int threads);
+
+private:
+    std::string folder_;
+    RunCostRecord before_;
+    std::chrono::steady_clock::time_point start_, lastSave_;
+};
 
 } // namespace grainlab

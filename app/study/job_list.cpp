@@ -23,8 +23,8 @@ std::vector<std::string> runArguments(const StudyLayout& layout, const std::stri
     if (resume) {
         return {layout.grainlab, "run", "--resume", layout.runFolder(run), "--quiet"};
     }
-    return {layout.grainlab, "run", layout.experimentFile(run), "--out", layout.runFolder(run),
-            "--quiet"};
+    return {layout.grainlab,       "run",    layout.experimentFile(run), "--out",
+            layout.runFolder(run), "--quiet"};
 }
 
 std::string shellQuote(const std::string& s) {
@@ -68,7 +68,8 @@ std::string slurmScript(const StudyLayout& layout, const std::string& studyName,
     s += "# Submit with: sbatch study.slurm    Summarise when all are done with:\n";
     s += fmt::format("#   {} study collect {}\n", shellQuote(layout.grainlab),
                      shellQuote(layout.folder));
-    s += "# A task that is cancelled or times out continues from its checkpoint when resubmitted.\n";
+    s +=
+        "# A task that is cancelled or times out continues from its checkpoint when resubmitted.\n";
     s += fmt::format("#SBATCH --job-name={}\n", studyName);
     s += fmt::format("#SBATCH --array=0-{}\n", runs.empty() ? 0 : runs.size() - 1);
     s += "#SBATCH --ntasks=1\n";

@@ -20,7 +20,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds(const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); }
+double seconds(const timeval& t) {
+    return double(t.tv_sec) + 1e-6 * double(t.tv_usec);
+}
 
 /// Starts `job` with its output appended to its log; returns the child's pid.
 pid_t start(const PoolJob& job) {
@@ -53,7 +55,8 @@ pid_t start(const PoolJob& job) {
         ::execv(argv[0], argv.data());
         const std::string message =
             fmt::format("cannot run {}: {}\n", job.argv.front(), std::strerror(errno));
-        [[maybe_unused]] const auto written = ::write(STDERR_FILENO, message.data(), message.size());
+        [[maybe_unused]] const auto written =
+            ::write(STDERR_FILENO, message.data(), message.size());
         ::_exit(127);
     }
     ::close(log);
@@ -62,7 +65,8 @@ pid_t start(const PoolJob& job) {
 
 } // namespace
 
-ProcessPool::ProcessPool(int slots) : slots_(slots < 1 ? 1 : slots) {}
+ProcessPool::ProcessPool(int maxJobs, int maxThreads)
+    : maxJobs_(maxJobs < 1 ? 1 : maxJobs), maxThreads_(maxThreads < 1 ? 1 : maxThreads) {}
 
 std::vector<PoolResult> ProcessPool::run(const std::vector<PoolJob>& jobs, const OnDone& onDone,
                                          const OnTick& onTick, const std::atomic<bool>* stop,
@@ -74,6 +78,7 @@ std::vector<PoolResult> ProcessPool::run(const std::vector<PoolJob>& jobs, const
     };
     std::map<pid_t, Running> running;
     std::size_t next = 0, ended = 0;
+    int threads = 0; // of the running jobs
     bool stopping = false;
     auto lastTick = Clock::now();
     while (next < jobs.size() || !running.empty()) {
@@ -83,8 +88,10 @@ std::vector<PoolResult> ProcessPool::run(const std::vector<PoolJob>& jobs, const
                 ::kill(pid, SIGINT);
             }
         }
-        while (!stopping && next < jobs.size() && int(running.size()) < slots_) {
+        while (!stopping && next < jobs.size() && int(running.size()) < maxJobs_ &&
+               (running.empty() || threads + jobs[next].threads <= maxThreads_)) {
             const pid_t pid = start(jobs[next]);
+            threads += jobs[next].threads;
             results[next].started = true;
             running[pid] = {next, Clock::now()};
             ++next;
@@ -110,6 +117,7 @@ std::vector<PoolResult> ProcessPool::run(const std::vector<PoolJob>& jobs, const
                 r.signal = WTERMSIG(status);
             }
             const std::size_t job = it->second.job;
+            threads -= jobs[job].threads;
             running.erase(it);
             ++ended;
             if (onDone) {
@@ -130,11 +138,9 @@ std::vector<PoolResult> ProcessPool::run(const std::vector<PoolJob>& jobs, const
     return results;
 }
 
-int defaultSlots(int threadsPerRun) {
+int processorCount() {
     const unsigned cores = std::thread::hardware_concurrency();
-    const int perRun = threadsPerRun < 1 ? 1 : threadsPerRun;
-    const int slots = int(cores == 0 ? 1 : cores) / perRun;
-    return slots < 1 ? 1 : slots;
+    return cores == 0 ? 1 : int(cores);
 }
 
 } // namespace grainlab

@@ -1,6 +1,8 @@
 #pragma once
 // A local pool of independent processes: runs a list of commands (each a `grainlab run`), at
-// most `slots` at a time, each with its output appended to a log file of its own, and reports
+// most `maxJobs` at a time and, by default, no more threads at once than the machine has
+// processors (a job says how many it uses), each with its output appended to a log file of its
+// own, and reports
 // every finished process with its exit status and cost (wall and processor seconds, from the
 // kernel's accounting of the child). Nothing is distributed: for a cluster the study emits a
 // Slurm job array or a GNU parallel job list instead (job_list.h).
@@ -20,6 +22,7 @@ namespace grainlab {
 struct PoolJob {
     std::vector<std::string> argv; ///< argv[0] is the program's path
     std::string logPath;           ///< stdout and stderr are appended here
+    int threads = 1;               ///< processors the job keeps busy
 };
 
 struct PoolResult {
@@ -33,7 +36,9 @@ struct PoolResult {
 
 class ProcessPool {
 public:
-    explicit ProcessPool(int slots);
+    /// At most `maxJobs` jobs at once, and at most `maxThreads` threads of them (a job with
+    /// more threads than that still runs, alone).
+    ProcessPool(int maxJobs, int maxThreads);
     /// Called on the calling thread as each job ends (index into the job list).
     using OnDone = std::function<void(std::size_t job, const PoolResult&)>;
     /// Called about every `tick` seconds while jobs run: (jobs ended, jobs running).
@@ -45,10 +50,10 @@ public:
                                 double tick = 0.5);
 
 private:
-    int slots_;
+    int maxJobs_, maxThreads_;
 };
 
-/// How many `threads`-thread processes fit the processors of this machine at once (>= 1).
-int defaultSlots(int threadsPerRun);
+/// The processors of this machine (>= 1).
+int processorCount();
 
 } // namespace grainlab

@@ -12,6 +12,8 @@
 #include "cli/atomic_file.h"
 #include "cli/progress_bar.h"
 #include "cli/run_cost.h"
+#include "grainlab/experiment_file.h"
+#include "grainlab/experiment_runner.h"
 #include "grainlab/study_file.h"
 #include "study/job_list.h"
 #include "study/process_pool.h"
@@ -25,18 +27,13 @@ namespace {
 
 std::atomic<bool> stopRequested{false};
 
-extern "C" void onStudyInterrupt(int) { stopRequested.store(true); }
+extern "C" void onStudyInterrupt(int) {
+    stopRequested.store(true);
+}
 
-/// The engine threads each run asks for (the experiment file's "threads", default 1).
-int threadsPerRun(const StudyPlan& plan) {
-    int threads = 1;
-    for (const StudyRun& r : plan.runs) {
-        const auto j = nlohmann::json::parse(r.experimentText);
-        if (j.contains("threads")) {
-            threads = std::max(threads, j["threads"].get<int>());
-        }
-    }
-    return threads;
+/// The engine threads run `run` uses.
+int threadsOf(const StudyRun& run) {
+    return engineThreads(parseExperimentText(run.experimentText, run.id));
 }
 
 /// Creates the study folder, or checks that an existing one holds this very study. Writes
@@ -45,7 +42,8 @@ void prepareFolder(const fs::path& dir, const StudySpec& spec, const StudyPlan& 
     const fs::path studyJson = dir / "study.json";
     if (fs::exists(dir)) {
         if (!fs::is_directory(dir)) {
-            throw std::runtime_error(fmt::format("--out {}: exists and is not a folder", dir.string()));
+            throw std::runtime_error(
+                fmt::format("--out {}: exists and is not a folder", dir.string()));
         }
         if (!fs::exists(studyJson)) {
             if (!fs::is_empty(dir)) {
@@ -127,7 +125,10 @@ int runStudyCommand(const StudyOptions& options) {
     for (const StudyRun& r : plan.runs) {
         ids.push_back(r.id);
     }
-    const int threads = threadsPerRun(plan);
+    int threads = 1; // the most any run uses: a Slurm task's processors
+    for (const StudyRun& r : plan.runs) {
+        threads = std::max(threads, threadsOf(r));
+    }
 
     if (options.emit == "slurm" || options.emit == "parallel") {
         const bool slurm = options.emit == "slurm";
@@ -144,8 +145,7 @@ int runStudyCommand(const StudyOptions& options) {
         return 0;
     }
     if (!options.emit.empty()) {
-        throw std::runtime_error(
-            fmt::format("--emit {}: must be slurm or parallel", options.emit));
+        throw std::runtime_error(fmt::format("--emit {}: must be slurm or parallel", options.emit));
     }
 
     // The runs still to do: a run folder with a run file continues, a finished run is skipped.
@@ -160,13 +160,13 @@ int runStudyCommand(const StudyOptions& options) {
         }
         const bool resume = fs::exists(fs::path(folder) / "run.h5");
         jobs.push_back({runArguments(layout, plan.runs[i].id, resume),
-                        layout.logFile(plan.runs[i].id)});
+                        layout.logFile(plan.runs[i].id), threadsOf(plan.runs[i])});
         jobRun.push_back(i);
     }
-    const int slots = options.jobs > 0 ? options.jobs : defaultSlots(threads);
+    const int slots = options.jobs > 0 ? options.jobs : processorCount();
     if (!options.quiet) {
-        fmt::print("grainlab study {}: {} settings x {} seeds = {} runs, {} done, {} at a time; "
-                   "folder {}\n",
+        fmt::print("grainlab study {}: {} settings x {} seeds = {} runs, {} done, at most {} at "
+                   "a time; folder {}\n",
                    spec.name, plan.settings.size(), spec.seeds.size(), plan.runs.size(),
                    finishedBefore, slots, dir.string());
     }
@@ -183,15 +183,14 @@ int runStudyCommand(const StudyOptions& options) {
                        fmt::format("{} done, {} running", finishedBefore + ended, running));
         }
     };
-    ProcessPool pool(slots);
+    ProcessPool pool(slots, options.jobs > 0 ? 1 << 20 : processorCount());
     const auto results = pool.run(
         jobs,
         [&](std::size_t job, const PoolResult& r) {
             if (!r.succeeded() && !stopRequested.load()) {
-                failed.push_back(fmt::format("{} (exit {}{}; log {})", plan.runs[jobRun[job]].id,
-                                             r.exitStatus,
-                                             r.signal ? fmt::format(", signal {}", r.signal) : "",
-                                             jobs[job].logPath));
+                failed.push_back(fmt::format(
+                    "{} (exit {}{}; log {})", plan.runs[jobRun[job]].id, r.exitStatus,
+                    r.signal ? fmt::format(", signal {}", r.signal) : "", jobs[job].logPath));
             }
         },
         draw, &stopRequested);

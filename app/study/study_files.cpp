@@ -62,7 +62,9 @@ std::vector<std::string> knobCells(const StudySpec& spec, const StudySetting& se
     return out;
 }
 
-std::string yesNo(bool b) { return b ? "yes" : "no"; }
+std::string yesNo(bool b) {
+    return b ? "yes" : "no";
+}
 
 } // namespace
 
@@ -110,8 +112,8 @@ void writeStudyCsv(const std::string& path, const StudySpec& spec, const StudyPl
     for (const auto& [name, unit] : metricColumns) {
         header.push_back(fmt::format("{} [{}]", name, unit));
     }
-    for (const char* c : {"wall_seconds [s]", "cpu_seconds [s]", "steps [-]", "grain_steps [-]",
-                          "threads [-]"}) {
+    for (const char* c :
+         {"wall_seconds [s]", "cpu_seconds [s]", "steps [-]", "grain_steps [-]", "threads [-]"}) {
         header.push_back(c);
     }
     std::string text = joinRow(header);
@@ -144,8 +146,8 @@ void writeSummaryCsv(const std::string& path, const StudySpec& spec, const Study
     for (const std::string& k : knobHeader(spec)) {
         header.push_back(k);
     }
-    for (const char* c : {"test", "metric", "unit", "mean", "sd", "error", "noise",
-                          "within_noise", "tolerance", "within_tolerance", "deciding"}) {
+    for (const char* c : {"test", "metric", "unit", "mean", "sd", "error", "noise", "within_noise",
+                          "tolerance", "within_tolerance", "deciding"}) {
         header.push_back(c);
     }
     std::string text = joinRow(header);
@@ -164,22 +166,22 @@ void writeSummaryCsv(const std::string& path, const StudySpec& spec, const Study
         };
         for (const MetricSummary& m : s.metrics) {
             const auto tol = spec.tolerances.find(m.metric);
-            const bool deciding = std::find(spec.deciding.begin(), spec.deciding.end(),
-                                            m.metric) != spec.deciding.end();
-            addRow({m.test, m.metric, m.unit,
-                    m.scatter.count > 0 ? cell(m.scatter.mean) : std::string(),
-                    m.scatter.count > 0 ? cell(m.scatter.sd) : std::string(), cell(m.error),
-                    cell(m.noise), m.error && m.noise ? yesNo(m.withinNoise) : std::string(),
-                    tol == spec.tolerances.end()
-                        ? std::string()
-                        : fmt::format("{}{}", tol->second.value, tol->second.relative ? " rel" : ""),
-                    m.withinTolerance ? yesNo(*m.withinTolerance) : std::string(),
-                    yesNo(deciding)});
+            const bool deciding = std::find(spec.deciding.begin(), spec.deciding.end(), m.metric) !=
+                                  spec.deciding.end();
+            addRow(
+                {m.test, m.metric, m.unit,
+                 m.scatter.count > 0 ? cell(m.scatter.mean) : std::string(),
+                 m.scatter.count > 0 ? cell(m.scatter.sd) : std::string(), cell(m.error),
+                 cell(m.noise), m.error && m.noise ? yesNo(m.withinNoise) : std::string(),
+                 tol == spec.tolerances.end()
+                     ? std::string()
+                     : fmt::format("{}{}", tol->second.value, tol->second.relative ? " rel" : ""),
+                 m.withinTolerance ? yesNo(*m.withinTolerance) : std::string(), yesNo(deciding)});
         }
         // The cost of the setting, as rows of their own ("test" = "cost").
         const auto costRow = [&](const char* metric, const char* unit, const Scatter& sc) {
-            addRow({"cost", metric, unit, sc.count ? cell(sc.mean) : "", sc.count ? cell(sc.sd) : "",
-                    "", "", "", "", "", "no"});
+            addRow({"cost", metric, unit, sc.count ? cell(sc.mean) : "",
+                    sc.count ? cell(sc.sd) : "", "", "", "", "", "", "no"});
         };
         costRow("wall_seconds", "s", s.wallSeconds);
         costRow("cpu_seconds", "s", s.cpuSeconds);

@@ -57,6 +57,7 @@ struct ExperimentRunner::Impl {
     Phase phase = Phase::Compaction;
     int index = 0;                 ///< compaction pressure index, or shear pressure index
     int calm = 0;                  ///< consecutive passing equilibrium checks
+    std::int64_t stepsTaken = 0;   ///< steps advanced by this runner object (its cost)
     std::int64_t stageStartStep = 0;
     double length1At0 = 0, length2At0 = 0, areaAt0 = 0; ///< strain references [m], [m^2]
     double voidsAtStart = -1;      ///< N_vi of the current test
@@ -448,10 +449,13 @@ bool ExperimentRunner::advance(std::int64_t maxSteps) {
         const std::int64_t chunk = std::min(m.stepsToNextEvent(), maxSteps - done);
         m.sim->advance(chunk);
         done += chunk;
+        m.stepsTaken += chunk;
         m.handleEvents();
     }
     return m.phase != Phase::Done;
 }
+
+std::int64_t ExperimentRunner::stepsTaken() const { return impl_->stepsTaken; }
 
 bool ExperimentRunner::finished() const { return impl_->phase == Phase::Done; }
 
@@ -500,5 +504,7 @@ std::shared_ptr<Snapshot> ExperimentRunner::snapshot(SnapshotMeasures measures) 
     snap->series = m.series;
     return snap;
 }
+
+int engineThreads(const ExperimentConfig& config) { return threadsFor(config); }
 
 } // namespace grainlab

@@ -17,8 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kTopKeys = {"name",   "description", "base",    "knobs",
-                                           "design", "reference",   "seeds",   "cost",
+const std::vector<std::string> kTopKeys = {"name",    "description", "base",  "knobs",
+                                           "design",  "reference",   "seeds", "cost",
                                            "metrics", "deciding"};
 
 std::vector<std::string> knobNames() {
@@ -109,10 +109,9 @@ KnobLevel readLevel(const std::string& file, const std::string& path, const Json
         return KnobLevel{0, out.dump()};
     }
     case KnobKind::Shape: {
-        const JsonSection s = object({"aspect_ratio", "closure", "end_radius_ratio"},
-                                     "{\"aspect_ratio\": 1}");
-        Json out = {
-            {"aspect_ratio", s.number("aspect_ratio", openClosed(0.0, 1.0), std::nullopt)}};
+        const JsonSection s =
+            object({"aspect_ratio", "closure", "end_radius_ratio"}, "{\"aspect_ratio\": 1}");
+        Json out = {{"aspect_ratio", s.number("aspect_ratio", openClosed(0.0, 1.0), std::nullopt)}};
         if (s.has("closure")) {
             out["closure"] = s.choice("closure", {"equal_area", "end_radius_ratio"}, std::nullopt);
         }
@@ -181,8 +180,8 @@ StudySpec parseStudyText(const std::string& text, const std::string& sourceName,
     }
 
     // Knobs, in the order of the knob table.
-    const JsonSection knobs = top.child("knobs", knobNames(), true,
-                                          "an object of knobs, each an array of levels");
+    const JsonSection knobs =
+        top.child("knobs", knobNames(), true, "an object of knobs, each an array of levels");
     if (top.at("knobs").empty()) {
         top.refuse("knobs", top.at("knobs"), "an object with at least one knob");
     }
@@ -207,10 +206,10 @@ StudySpec parseStudyText(const std::string& text, const std::string& sourceName,
         spec.knobs.push_back(std::move(knob));
     }
 
-    spec.design = top.choice("design", {"one_at_a_time", "grid"}, std::string("one_at_a_time")) ==
-                          "grid"
-                      ? StudyDesign::Grid
-                      : StudyDesign::OneAtATime;
+    spec.design =
+        top.choice("design", {"one_at_a_time", "grid"}, std::string("one_at_a_time")) == "grid"
+            ? StudyDesign::Grid
+            : StudyDesign::OneAtATime;
     const JsonSection reference = top.child("reference", knobNames(), false);
     for (KnobKind kind : allKnobs()) {
         const std::string name = knobName(kind);
@@ -281,16 +280,15 @@ StudySpec parseStudyText(const std::string& text, const std::string& sourceName,
         spec.deciding.clear();
         for (std::size_t i = 0; i < d.size(); ++i) {
             const std::string key = fmt::format("deciding[{}]", i);
-            if (!d[i].is_string() ||
-                std::find(metricNames.begin(), metricNames.end(), d[i].get<std::string>()) ==
-                    metricNames.end()) {
+            if (!d[i].is_string() || std::find(metricNames.begin(), metricNames.end(),
+                                               d[i].get<std::string>()) == metricNames.end()) {
                 top.refuse(key, d[i], "the name of a metric (docs/study-file.md)");
             }
             const std::string name = d[i];
             if (!spec.tolerances.count(name)) {
-                top.refuse(key, d[i],
-                           fmt::format("a metric with a tolerance: give metrics.{}.tolerance",
-                                       name));
+                top.refuse(
+                    key, d[i],
+                    fmt::format("a metric with a tolerance: give metrics.{}.tolerance", name));
             }
             spec.deciding.push_back(name);
         }

@@ -30,17 +30,16 @@ TEST(JobList, SlurmScriptIsValidBashWithOneArrayTaskPerRun) {
 
 TEST(JobList, ParallelLinesStartOrContinueARunAndQuoteThePaths) {
     const std::string list = parallelJobList(kLayout, {"ref-seed1", "a-seed2"});
-    EXPECT_EQ(list,
-              "if [ -e '/data/my study/runs/ref-seed1/run.h5' ]; then "
-              "'/opt/grainlab/bin/grainlab' 'run' '--resume' '/data/my study/runs/ref-seed1' "
-              "'--quiet'; else '/opt/grainlab/bin/grainlab' 'run' "
-              "'/data/my study/experiments/ref-seed1.json' '--out' "
-              "'/data/my study/runs/ref-seed1' '--quiet'; fi\n"
-              "if [ -e '/data/my study/runs/a-seed2/run.h5' ]; then "
-              "'/opt/grainlab/bin/grainlab' 'run' '--resume' '/data/my study/runs/a-seed2' "
-              "'--quiet'; else '/opt/grainlab/bin/grainlab' 'run' "
-              "'/data/my study/experiments/a-seed2.json' '--out' "
-              "'/data/my study/runs/a-seed2' '--quiet'; fi\n");
+    EXPECT_EQ(list, "if [ -e '/data/my study/runs/ref-seed1/run.h5' ]; then "
+                    "'/opt/grainlab/bin/grainlab' 'run' '--resume' '/data/my study/runs/ref-seed1' "
+                    "'--quiet'; else '/opt/grainlab/bin/grainlab' 'run' "
+                    "'/data/my study/experiments/ref-seed1.json' '--out' "
+                    "'/data/my study/runs/ref-seed1' '--quiet'; fi\n"
+                    "if [ -e '/data/my study/runs/a-seed2/run.h5' ]; then "
+                    "'/opt/grainlab/bin/grainlab' 'run' '--resume' '/data/my study/runs/a-seed2' "
+                    "'--quiet'; else '/opt/grainlab/bin/grainlab' 'run' "
+                    "'/data/my study/experiments/a-seed2.json' '--out' "
+                    "'/data/my study/runs/a-seed2' '--quiet'; fi\n");
 }
 
 TEST(JobList, ShellQuoteSurvivesQuotes) {

@@ -44,12 +44,12 @@ TEST(ProcessPool, RunsEveryJobWithItsStatusAndLogAndNeverMoreThanItsSlots) {
         const std::string mark = (dir / ("running-" + std::to_string(k))).string();
         jobs.push_back(shell(dir / ("job" + std::to_string(k) + ".log"),
                              "touch " + mark + "; sleep 0.2; ls " + dir.string() +
-                                 " | grep -c running- >> " + (dir / "seen").string() +
-                                 "; rm " + mark + "; echo hello " + std::to_string(k) +
-                                 "; exit " + std::to_string(k % 3)));
+                                 " | grep -c running- >> " + (dir / "seen").string() + "; rm " +
+                                 mark + "; echo hello " + std::to_string(k) + "; exit " +
+                                 std::to_string(k % 3)));
     }
     std::vector<std::size_t> done;
-    const auto results = ProcessPool(2).run(
+    const auto results = ProcessPool(2, 64).run(
         jobs, [&](std::size_t job, const PoolResult&) { done.push_back(job); });
     ASSERT_EQ(results.size(), 6u);
     EXPECT_EQ(done.size(), 6u);
@@ -72,7 +72,7 @@ TEST(ProcessPool, RunsEveryJobWithItsStatusAndLogAndNeverMoreThanItsSlots) {
 
 TEST(ProcessPool, ProcessorTimeComesFromTheKernelAndSignalsAreReported) {
     const fs::path dir = freshFolder("cost");
-    const auto results = ProcessPool(2).run(
+    const auto results = ProcessPool(2, 64).run(
         {shell(dir / "busy.log", "i=0; while [ $i -lt 200000 ]; do i=$((i+1)); done"),
          shell(dir / "killed.log", "kill -KILL $$")});
     EXPECT_GT(results[0].cpuSeconds, 0.01);
@@ -96,7 +96,7 @@ TEST(ProcessPool, StopInterruptsTheRunningAndStartsNoMore) {
         stop.store(true);
     });
     const auto start = std::chrono::steady_clock::now();
-    const auto results = ProcessPool(2).run(jobs, {}, {}, &stop);
+    const auto results = ProcessPool(2, 64).run(jobs, {}, {}, &stop);
     stopper.join();
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 20);
     EXPECT_TRUE(results[0].started);
@@ -107,11 +107,33 @@ TEST(ProcessPool, StopInterruptsTheRunningAndStartsNoMore) {
     EXPECT_EQ(text(dir / "job0.log"), "interrupted\n");
 }
 
-TEST(ProcessPool, DefaultSlotsFitTheProcessors) {
-    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-    EXPECT_EQ(defaultSlots(1), cores);
-    EXPECT_EQ(defaultSlots(cores), 1);
-    EXPECT_EQ(defaultSlots(cores * 4), 1);
+TEST(ProcessPool, JobsShareTheProcessorsByTheirThreads) {
+    const fs::path dir = freshFolder("threads");
+    // Three 2-thread jobs and one 1-thread job on 3 processors: the 2-thread jobs never overlap
+    // each other; a job wider than the machine still runs (alone).
+    std::vector<PoolJob> jobs;
+    const std::string seen = (dir / "seen").string();
+    for (int k = 0; k < 4; ++k) {
+        const std::string mark = (dir / ("running-" + std::to_string(k))).string();
+        PoolJob job = shell(dir / ("job" + std::to_string(k) + ".log"),
+                            "touch " + mark + "; sleep 0.3; ls " + dir.string() +
+                                " | grep -c running- >> " + seen + "; rm " + mark);
+        job.threads = k == 3 ? 1 : 2;
+        jobs.push_back(job);
+    }
+    PoolJob wide = shell(dir / "wide.log", "true");
+    wide.threads = 8;
+    jobs.push_back(wide);
+    const auto results = ProcessPool(8, 3).run(jobs);
+    for (const auto& r : results) {
+        EXPECT_TRUE(r.succeeded());
+    }
+    std::istringstream in(text(dir / "seen"));
+    int most = 0;
+    for (int n; in >> n;) {
+        most = std::max(most, n);
+    }
+    EXPECT_EQ(most, 2); // a 2-thread job with the 1-thread job, never two 2-thread jobs
 }
 
 } // namespace

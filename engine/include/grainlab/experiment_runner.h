@@ -58,6 +58,10 @@ struct ResumePoint {
     std::vector<SeriesTable> series;       ///< the series as recorded up to the checkpoint
 };
 
+/// The engine threads a run of `config` uses: its `threads`, but one thread per 2000 grains at
+/// most (a small assembly gains nothing from a second thread). Results are the same bits for any.
+int engineThreads(const ExperimentConfig& config);
+
 class ExperimentRunner {
 public:
     explicit ExperimentRunner(ExperimentConfig config, RunOutput* output = nullptr);
@@ -70,6 +74,8 @@ public:
     /// Throws SimulationError (blow-up) or std::runtime_error (a stage that cannot finish).
     bool advance(std::int64_t maxSteps);
     bool finished() const;
+    /// Time steps this runner object has advanced (a resumed run counts from its resumption).
+    std::int64_t stepsTaken() const;
     RunProgress progress() const;
     const ExperimentConfig& config() const;
     /// The simulation of the current stage (valid until the next advance()).
