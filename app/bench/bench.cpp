@@ -21,6 +21,7 @@
 #include "cli/progress_bar.h"
 #include "grainlab/assembly.h"
 #include "grainlab/measures.h"
+#include "grainlab/scenes/compacted_scene.h"
 #include "grainlab/simulation.h"
 
 namespace grainlab {
@@ -32,41 +33,23 @@ constexpr double kAxialStrainRate = 0.2; // engineering, as LAMMPS's fix deform 
 // ---------------------------------------------------------------------------------------------
 // Assemblies
 
-/// Loose grid -> frictionless isotropic compaction to 100 kPa, then velocities cleared.
+/// Loose grid -> frictionless isotropic compaction to 100 kPa by the runner's equilibrium rule
+/// (the shared scene), then velocities cleared.
 SimulationState compactedAssembly(int grains, double aspectRatio, std::uint64_t seed) {
-    AssemblySpec spec;
-    spec.grainCount = grains;
-    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 11);
+    scenes::CompactedSceneSpec spec;
+    spec.grains = grains;
     spec.aspectRatio = aspectRatio;
     spec.seed = seed;
-    SimulationParameters p;
-    p.friction = 0.0;
-    p.servo.maxStrainRate = 20.0;
-    p.threads = 2;
-    Simulation sim(generateGridAssembly(spec, p));
-    const AxisControl servo{AxisMode::Stress, 0.0, kConfiningStress};
-    sim.setAxisControl(0, servo);
-    sim.setAxisControl(1, servo);
+    spec.pressure = kConfiningStress;
+    spec.threads = 2;
     ProgressBar bar(
         fmt::format("preparing {} {}s at 100 kPa", grains, aspectRatio < 1 ? "oval" : "disk"));
-    // The experiment runner's equilibrium rule: stress within 1 % and unbalanced-force index
-    // below 1 % at 20 consecutive checks 100 steps apart.
-    const std::int64_t maxSteps = 400000;
-    int calm = 0;
-    for (std::int64_t k = 0; k < maxSteps && calm < 20; k += 100) {
-        sim.advance(100);
-        const Stress s = sim.stress();
-        const double error =
-            std::max(std::fabs(s.s11 - kConfiningStress), std::fabs(s.s22 - kConfiningStress)) /
-            kConfiningStress;
-        const double unbalanced = unbalancedForceIndex(sim.contactNetwork());
-        calm = (error < 0.01 && unbalanced < 1.0) ? calm + 1 : 0;
-        bar.update(double(k) / maxSteps,
-                   fmt::format("p error {:.1f} % I_uf {:.2f} %", 100 * error, unbalanced));
-    }
+    SimulationState out = scenes::compactedState(spec, [&](const scenes::CompactionProgress& p) {
+        bar.update(double(p.step) / p.maxSteps,
+                   fmt::format("p error {:.1f} % I_uf {:.2f} %", 100 * p.check.stressError,
+                               p.check.unbalancedForce));
+    });
     bar.finish();
-    sim.clearVelocities();
-    SimulationState out = sim.state();
     out.parameters = SimulationParameters{}; // the reference parameters for the timed runs
     return out;
 }

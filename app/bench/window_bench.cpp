@@ -28,6 +28,7 @@
 #include "cli/progress_bar.h"
 #include "grainlab/assembly.h"
 #include "grainlab/experiment_file.h"
+#include "grainlab/scenes/compacted_scene.h"
 #include "grainlab/simulation.h"
 #include "grainlab/ui/gl_scene_layer.h"
 #include "grainlab/ui/scene_renderer.h"
@@ -349,36 +350,25 @@ void benchWindow(const BenchOptions& o, int threads) {
 // ---------------------------------------------------------------------------------------------
 // (b) The scene's frame time
 
-/// `grains` ovals (the reference study's widths) compacted at 100 kPa until the network is
-/// dense and connected (mean coordination above 3.4), as a snapshot with contacts and void
-/// cells.
+/// `grains` ovals (the reference study's widths) compacted at 100 kPa by the runner's
+/// equilibrium rule (the shared scene), as a snapshot with contacts and void cells.
 SnapshotPtr compactedOvals(int grains, std::uint64_t seed, int threads) {
-    AssemblySpec spec;
-    spec.grainCount = grains;
-    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 11);
+    scenes::CompactedSceneSpec spec;
+    spec.grains = grains;
     spec.aspectRatio = 0.6;
     spec.seed = seed;
-    SimulationParameters p;
-    p.friction = 0.3;
-    p.servo.maxStrainRate = 20.0;
-    p.threads = threads;
-    const SimulationState initial = generateGridAssembly(spec, p);
-    Simulation sim(initial);
-    const AxisControl servo{AxisMode::Stress, 0.0, 1e5};
-    sim.setAxisControl(0, servo);
-    sim.setAxisControl(1, servo);
+    spec.friction = 0.3;
+    spec.threads = threads;
     ProgressBar bar(fmt::format("compacting {} ovals for the scene", grains));
-    for (std::int64_t done = 0; done < 400000; done += 1000) {
-        sim.advance(1000);
-        const double z = 2.0 * double(sim.contactCount()) / grains;
-        if (z > 3.4 && sim.stress().s11 > 5e4) {
-            break;
-        }
-        bar.update(std::min(1.0, z / 3.4), fmt::format("Z = {:.2f}", z));
-    }
+    scenes::CompactedScene scene =
+        scenes::compactScene(spec, [&](const scenes::CompactionProgress& p) {
+            bar.update(double(p.step) / p.maxSteps,
+                       fmt::format("p error {:.1f} % I_uf {:.2f} %", 100 * p.check.stressError,
+                                   p.check.unbalancedForce));
+        });
     bar.finish();
     auto s = std::make_shared<Snapshot>();
-    fillSnapshotScene(*s, sim, initial.grains.theta);
+    fillSnapshotScene(*s, scene.simulation, scene.initialTheta);
     s->stage = "compaction 100 kPa";
     s->test = "compaction";
     return s;

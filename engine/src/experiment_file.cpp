@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "grainlab/experiment_limits.h"
 #include "grainlab/oval_shape.h"
 #include "grainlab/strict_json.h"
 #include "grainlab/time_step.h"
@@ -24,6 +25,36 @@ const std::vector<std::string> kCriterionKeys = {"stress_tolerance", "unbalanced
 constexpr std::int64_t kMaxInt = std::numeric_limits<std::int32_t>::max();
 constexpr std::int64_t kMaxInt64 = std::numeric_limits<std::int64_t>::max();
 
+/// Refuses a servo rate cap `rate` [1/s] above kMaxStrainPerStep per time step, the cell strain
+/// per step that the neighbour list follows (checked once the time step is known stable).
+void checkStrainRate(const JsonSection& s, double rate, double timeStep) {
+    const double cap = kMaxStrainPerStep / timeStep;
+    if (rate > cap) {
+        const std::string allowed =
+            fmt::format("a number in (0, {:g}] [1/s]: with time_step = {:g} s, a cell strain of "
+                        "at most {} per step, which the neighbour list follows",
+                        cap, timeStep, kMaxStrainPerStep);
+        if (!s.has("max_strain_rate")) {
+            s.fail("max_strain_rate", fmt::format("{} (default {:g}) must be {}; set it",
+                                                  s.path("max_strain_rate"), rate, allowed));
+        }
+        s.refuse("max_strain_rate", s.at("max_strain_rate"), allowed);
+    }
+}
+
+bool finitePositive(double x) {
+    return std::isfinite(x) && x > 0.0;
+}
+
+/// Every quantity the engine derives from a shape and the density is a finite positive number.
+bool finiteShape(const OvalShape& s, double density) {
+    return finitePositive(s.halfWidth) && finitePositive(s.halfHeight) &&
+           finitePositive(s.endRadius) && finitePositive(s.sideRadius) && finitePositive(s.area) &&
+           finitePositive(s.polarMoment) && finitePositive(density * s.area) &&
+           finitePositive(density * s.polarMoment) && std::isfinite(s.cosJunction) &&
+           std::isfinite(s.sinJunction);
+}
+
 EquilibriumCriterion readCriterion(const JsonSection& s) {
     EquilibriumCriterion c;
     const EquilibriumCriterion d;
@@ -36,7 +67,18 @@ EquilibriumCriterion readCriterion(const JsonSection& s) {
 }
 
 void readGrains(const JsonSection& g, AssemblySpec& a) {
-    a.grainCount = static_cast<int>(g.integer("count", 1, kMaxInt, std::nullopt));
+    // Bounded by this machine's memory: a count it cannot hold would allocate until it runs out.
+    const std::int64_t count = g.integer("count", 1, kMaxInt64, std::nullopt);
+    if (count > maxGrainCount()) {
+        g.refuse("count", g.at("count"),
+                 fmt::format("an integer in [1, {}] (this machine's memory, {:.1f} GiB, at {} KiB "
+                             "per grain)",
+                             maxGrainCount(),
+                             double(maxGrainCount()) * kBytesPerGrain / (1024.0 * 1024 * 1024),
+                             kBytesPerGrain / 1024));
+    }
+    a.grainCount = static_cast<int>(count);
+    const Range width = closed(kMinGrainWidth, kMaxGrainWidth);
     if (g.has("widths")) {
         for (const char* k : {"width_min", "width_max", "size_classes"}) {
             if (g.has(k)) {
@@ -45,10 +87,10 @@ void readGrains(const JsonSection& g, AssemblySpec& a) {
                                       g.path(k), g.path("widths")));
             }
         }
-        a.widths = *g.numbers("widths", positive());
+        a.widths = *g.numbers("widths", width);
     } else {
-        const double wMin = g.number("width_min", positive(), std::nullopt);
-        const double wMax = g.number("width_max", {wMin, kInf, true, false}, std::nullopt);
+        const double wMin = g.number("width_min", width, std::nullopt);
+        const double wMax = g.number("width_max", closed(wMin, kMaxGrainWidth), std::nullopt);
         const int classes = static_cast<int>(g.integer("size_classes", 1, kMaxInt, std::nullopt));
         if (classes == 1 && wMax != wMin) {
             g.refuse("width_max", g.at("width_max"),
@@ -212,6 +254,12 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
         shear.number("target_axial_strain", open(0.0, 1.0), std::nullopt);
     config.shear.axialStrainPerStep =
         shear.number("axial_strain_per_step", open(0.0, config.shear.targetAxialStrain), 2e-7);
+    if (config.shear.axialStrainPerStep > kMaxStrainPerStep) {
+        shear.refuse("axial_strain_per_step", shear.at("axial_strain_per_step"),
+                     fmt::format("a number in (0, {}]: the neighbour list follows a cell strain of "
+                                 "at most {} per step",
+                                 kMaxStrainPerStep, kMaxStrainPerStep));
+    }
     config.shear.maxStrainRate = shear.number("max_strain_rate", positive(), 1.0);
     config.shear.equilibration = readCriterion(shear.child("equilibration", kCriterionKeys, false));
 
@@ -235,18 +283,51 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
     p.servo.maxStrainRate = config.compaction.maxStrainRate;
 
     // The shapes the file implies, and the time step against their stable limit (SPEC §3.7).
+    // Each derived quantity must be finite: a width is blamed when its disk is already out of
+    // range, the shape's ratio when only the oval is, the density when only the masses are.
     std::vector<OvalShape> shapes;
-    try {
-        for (double w : config.assembly.widths) {
+    const std::string ratioKey = config.assembly.closure == OvalClosure::EndRadiusRatio
+                                     ? "grains.end_radius_ratio"
+                                     : "grains.aspect_ratio";
+    const auto refuseShape = [&](const std::string& key, const std::string& why) {
+        throw ExperimentFileError(sourceName, key, fmt::format("{}: {}", key, why));
+    };
+    for (std::size_t i = 0; i < config.assembly.widths.size(); ++i) {
+        const double w = config.assembly.widths[i];
+        const std::string widthKey = top.has("grains") && top.at("grains").contains("widths")
+                                         ? fmt::format("grains.widths[{}]", i)
+                                     : i + 1 == config.assembly.widths.size() ? "grains.width_max"
+                                                                              : "grains.width_min";
+        OvalShape disk;
+        try {
+            disk = makeOval(w, 1.0);
+        } catch (const std::invalid_argument& e) {
+            refuseShape(widthKey, fmt::format("no valid grain of width {} m: {}", w, e.what()));
+        }
+        if (!finiteShape(disk, p.density)) {
+            refuseShape(widthKey,
+                        fmt::format("a grain of width {} m has no finite area, mass and moment of "
+                                    "inertia; widths must be in [{}, {}] m",
+                                    w, kMinGrainWidth, kMaxGrainWidth));
+        }
+        try {
             shapes.push_back(makeOval(w, config.assembly.aspectRatio, config.assembly.closure,
                                       config.assembly.endRadiusRatio));
+        } catch (const std::invalid_argument& e) {
+            refuseShape(ratioKey, fmt::format("no valid oval: {}", e.what()));
         }
-    } catch (const std::invalid_argument& e) {
-        const std::string key = config.assembly.closure == OvalClosure::EndRadiusRatio
-                                    ? "grains.end_radius_ratio"
-                                    : "grains.aspect_ratio";
-        throw ExperimentFileError(sourceName, key,
-                                  fmt::format("{}: no valid oval: {}", key, e.what()));
+        if (!finiteShape(shapes.back(), 1.0)) {
+            refuseShape(ratioKey, fmt::format("the oval of width {} m has non-finite or zero arc "
+                                              "radii, area or moment of inertia; every derived "
+                                              "quantity must be finite (use a larger ratio)",
+                                              w));
+        }
+        if (!finiteShape(shapes.back(), p.density)) {
+            refuseShape("material.density",
+                        fmt::format("density {} kg/m^3 gives a grain of width {} m no finite "
+                                    "mass or moment of inertia",
+                                    p.density, w));
+        }
     }
     try {
         checkTimeStep(shapes, p);
@@ -254,6 +335,8 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
         throw ExperimentFileError(sourceName, "time_step",
                                   fmt::format("time_step = {}: {}", p.timeStep, e.what()));
     }
+    checkStrainRate(compaction, config.compaction.maxStrainRate, p.timeStep);
+    checkStrainRate(shear, config.shear.maxStrainRate, p.timeStep);
     return config;
 }
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "grainlab/equilibrium.h"
 #include "grainlab/measures.h"
 #include "grainlab/periodic_cell.h"
 
@@ -323,14 +324,9 @@ struct ExperimentRunner::Impl {
         }
         const EquilibriumCriterion& c = criterion();
         if ((now - stageStartStep) % c.checkInterval == 0) {
-            const double target = pressure();
-            const Stress s = sim->stress();
-            const double error =
-                std::max(std::fabs(s.s11 - target), std::fabs(s.s22 - target)) / target;
-            const double unbalanced = unbalancedForceIndex(sim->contactNetwork());
-            const bool pass = error <= c.stressTolerance && unbalanced <= c.unbalancedForceMax &&
-                              sim->contactCount() > 0;
-            calm = pass ? calm + 1 : 0;
+            const EquilibriumCheck check = checkEquilibrium(*sim, pressure(), c);
+            const double error = check.stressError, unbalanced = check.unbalancedForce;
+            calm = calmChecksAfter(calm, check);
             if (calm >= c.calmChecks) {
                 finishEquilibrium();
                 return;

@@ -304,6 +304,21 @@ Json parseStrictJson(const std::string& text, const std::string& file) {
         case Event::object_start:
         case Event::array_start: {
             std::string p = childPath();
+            if (stack.size() >= std::size_t(kMaxJsonNesting)) {
+                // Refused as soon as it is seen: parsing a deeper file would cost memory
+                // growing with the square of its depth. Blamed on the innermost key.
+                std::string key;
+                for (std::size_t i = stack.size() - 1; i >= 1 && key.empty(); --i) {
+                    if (stack[i - 1].object) {
+                        key = stack[i].path;
+                    }
+                }
+                throw JsonFileError(file, key,
+                                    fmt::format("{}: nesting deeper than {} levels of objects "
+                                                "and arrays (no value of the file needs more "
+                                                "than a few)",
+                                                key.empty() ? "the file" : key, kMaxJsonNesting));
+            }
             stack.push_back({event == Event::object_start, std::move(p), {}, {}, 0});
             break;
         }
@@ -349,6 +364,16 @@ Json parseStrictJson(const std::string& text, const std::string& file) {
         throw JsonFileError(
             file, "",
             fmt::format("JSON syntax error at line {}, column {}: {}", line, column, detail));
+    } catch (const Json::out_of_range& e) {
+        // A number beyond the range of a double (1e309): the value of the key just read.
+        const std::string key = childPath();
+        std::string detail = e.what();
+        const auto parsing = detail.find("parsing ");
+        detail = parsing == std::string::npos ? detail : detail.substr(parsing + 8);
+        throw JsonFileError(file, key,
+                            fmt::format("{} = {}: a number beyond the range of a double (about "
+                                        "+-1.8e308)",
+                                        key.empty() ? "the file" : key, detail));
     } catch (const Json::exception& e) {
         throw JsonFileError(file, "", fmt::format("not valid JSON: {}", e.what()));
     }

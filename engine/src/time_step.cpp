@@ -48,6 +48,13 @@ std::string checkTimeStep(const std::vector<OvalShape>& shapes, const Simulation
                            lim.limit, lim.translational, lim.rotational,
                            shapes[lim.stiffestShape].width, p.stability.designCoordination);
     };
+    if (!(lim.limit > 0.0) || !std::isfinite(lim.limit)) {
+        throw std::invalid_argument(fmt::format(
+            "the stable limit is not a finite positive number ({}: translational {}, rotational "
+            "{}); the material's stiffness and density and the grains' shapes must give finite "
+            "masses, moments of inertia and stiffnesses",
+            lim.limit, lim.translational, lim.rotational));
+    }
     if (dt > lim.limit) {
         throw std::invalid_argument(fmt::format(
             "time step {:.4g} s is above {}; use at most {:.4g} s", dt, describe(), lim.limit));

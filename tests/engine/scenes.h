@@ -1,9 +1,11 @@
 #pragma once
 // Small scenes for the engine tests, each built in a few lines.
 
+#include <utility>
 #include <vector>
 
 #include "grainlab/assembly.h"
+#include "grainlab/scenes/compacted_scene.h"
 #include "grainlab/simulation.h"
 
 namespace grainlab::test {
@@ -64,22 +66,18 @@ inline Simulation compacted(SimulationState state, double pressure, std::int64_t
     return sim;
 }
 
-/// Compacts `count` grains of aspect ratio `aspect` isotropically to 100 kPa, frictionless.
-inline Simulation compactedPacking(int count, double aspect, std::uint64_t seed, std::int64_t steps) {
-    AssemblySpec spec;
-    spec.grainCount = count;
-    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 5);
+/// `count` grains of aspect ratio `aspect` (5 classes over 1-2 mm) compacted isotropically to
+/// 100 kPa, frictionless, by the shared scene: until the runner's equilibrium rule holds, or
+/// `steps` steps.
+inline Simulation compactedPacking(int count, double aspect, std::uint64_t seed,
+                                   std::int64_t steps) {
+    scenes::CompactedSceneSpec spec;
+    spec.grains = count;
     spec.aspectRatio = aspect;
+    spec.widths = evenlySpacedWidths(1e-3, 2e-3, 5);
     spec.seed = seed;
-    SimulationParameters parameters;
-    parameters.friction = 0;
-    parameters.servo.maxStrainRate = 20;
-    Simulation simulation(generateGridAssembly(spec, parameters));
-    for (int axis = 0; axis < 2; ++axis) {
-        simulation.setAxisControl(axis, AxisControl{AxisMode::Stress, 0, 1e5});
-    }
-    simulation.advance(steps);
-    return simulation;
+    spec.criterion.maxSteps = steps;
+    return std::move(scenes::compactScene(spec).simulation);
 }
 
 /// A dense frictionless-compacted assembly at 100 kPa (computed once per aspect ratio and

@@ -1,0 +1,155 @@
+// Hostile experiment files: each is refused up front, before any allocation or step, with the
+// file, the key and a range that the engine can honour (no crash, no hang, no out-of-memory).
+#include <cfenv>
+#include <filesystem>
+#include <initializer_list>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "grainlab/experiment_file.h"
+#include "grainlab/experiment_limits.h"
+
+namespace grainlab {
+namespace {
+
+using Json = nlohmann::json;
+
+Json minimalExperiment() {
+    return Json::parse(R"({
+        "seed": 7,
+        "grains": {"count": 50, "width_min": 1.0e-3, "width_max": 2.0e-3, "size_classes": 3,
+                   "aspect_ratio": 0.6},
+        "material": {"normal_stiffness": 1e8, "tangential_stiffness": 1e8, "density": 2650},
+        "time_step": 1e-6,
+        "compaction": {"pressures": [15e3, 25e3]},
+        "shear": {"target_axial_strain": 0.1}
+    })");
+}
+
+/// The engine tests trap floating-point exceptions (tests/engine/main.cpp); the reader finds a
+/// non-finite derived quantity by computing it, so the traps are off while it reads.
+class TrapsOff {
+public:
+    TrapsOff() : traps_(fegetexcept()) { fedisableexcept(FE_ALL_EXCEPT); }
+    ~TrapsOff() {
+        feclearexcept(FE_ALL_EXCEPT);
+        feenableexcept(traps_);
+    }
+
+private:
+    int traps_;
+};
+
+void expectRefusedText(const std::string& text, const std::string& keyPath,
+                       std::initializer_list<std::string> fragments) {
+    const TrapsOff quiet;
+    try {
+        parseExperimentText(text, "bad.json");
+        ADD_FAILURE() << "accepted, expected an error at " << keyPath;
+    } catch (const ExperimentFileError& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(e.keyPath, keyPath) << what;
+        EXPECT_EQ(e.file, "bad.json");
+        EXPECT_EQ(what.rfind("bad.json: ", 0), 0u) << what;
+        for (const auto& f : fragments) {
+            EXPECT_NE(what.find(f), std::string::npos) << "missing \"" << f << "\" in: " << what;
+        }
+    }
+}
+
+void expectRefused(const Json& j, const std::string& keyPath,
+                   std::initializer_list<std::string> fragments) {
+    expectRefusedText(j.dump(2), keyPath, fragments);
+}
+
+TEST(HostileExperiment, StrainRateBeyondWhatTheNeighbourListFollowsIsRefused) {
+    // 1e8 / s at dt = 1e-6 s is a cell strain of 100 per step: it crashed the neighbour rebuild.
+    for (const double rate : {1e8, 1e9, 2e3}) {
+        Json j = minimalExperiment();
+        j["compaction"]["max_strain_rate"] = rate;
+        expectRefused(j, "compaction.max_strain_rate", {"compaction.max_strain_rate", "1000"});
+        j = minimalExperiment();
+        j["shear"]["max_strain_rate"] = rate;
+        expectRefused(j, "shear.max_strain_rate", {"shear.max_strain_rate"});
+    }
+    Json j = minimalExperiment();
+    j["compaction"]["max_strain_rate"] = 1e3; // 1e-3 per step: the limit itself is fine
+    EXPECT_NO_THROW(parseExperimentText(j.dump(), "ok.json"));
+    j = minimalExperiment();
+    j["shear"]["axial_strain_per_step"] = 0.05;
+    expectRefused(j, "shear.axial_strain_per_step", {"shear.axial_strain_per_step", "0.001"});
+}
+
+TEST(HostileExperiment, GrainCountBeyondMemoryIsRefused) {
+    // 1e9 grains allocated until the machine ran out of memory.
+    Json j = minimalExperiment();
+    j["grains"]["count"] = 1e9;
+    expectRefused(j, "grains.count", {"grains.count = 1000000000", "memory"});
+    EXPECT_LT(maxGrainCount(), 1000000000);
+    EXPECT_GE(maxGrainCount(), 100000); // any machine that runs the suite holds 100k grains
+}
+
+TEST(HostileExperiment, DerivedQuantitiesMustBeFinite) {
+    // aspect_ratio 1e-308 gave a non-finite time-step limit that passed the check.
+    Json j = minimalExperiment();
+    j["grains"]["aspect_ratio"] = 1e-308;
+    expectRefused(j, "grains.aspect_ratio", {"grains.aspect_ratio", "finite"});
+    // width_max 1e308 was blamed on aspect_ratio.
+    j = minimalExperiment();
+    j["grains"]["width_max"] = 1e308;
+    expectRefused(j, "grains.width_max", {"grains.width_max = 1e+308", "1000"});
+    j = minimalExperiment();
+    j["grains"].erase("width_min");
+    j["grains"].erase("width_max");
+    j["grains"].erase("size_classes");
+    j["grains"]["widths"] = {1e-3, 1e-300};
+    expectRefused(j, "grains.widths[1]", {"grains.widths[1]", "1e-09"});
+}
+
+TEST(HostileExperiment, TimeStepCheckRefusesANonFiniteLimit) {
+    Json j = minimalExperiment();
+    j["material"]["normal_stiffness"] = 1e308; // k z overflows: the limit is 0
+    j["material"]["tangential_stiffness"] = 1e308;
+    expectRefused(j, "time_step", {"time_step"});
+}
+
+TEST(HostileExperiment, DeepNestingIsRefusedWithoutParsingIt) {
+    // 100k levels cost memory growing with the square of the depth.
+    std::string deep = R"({"name": "deep", "description": )";
+    const int depth = 100000;
+    deep += std::string(depth, '[') + std::string(depth, ']') + "}";
+    expectRefusedText(deep, "description", {"nesting", "32"});
+    const std::string deepObject = R"({"grains": {"count": {"a": {"b": )" + std::string(40, '[') +
+                                   std::string(40, ']') + "}}}}";
+    expectRefusedText(deepObject, "grains.count.a.b", {"nesting"});
+}
+
+TEST(HostileExperiment, NumberBeyondADoubleNamesItsKey) {
+    std::string text = minimalExperiment().dump();
+    const std::string from = "\"time_step\":1e-06";
+    ASSERT_NE(text.find(from), std::string::npos) << text;
+    text.replace(text.find(from), from.size(), "\"time_step\":1e309");
+    expectRefusedText(text, "time_step", {"time_step", "1e309", "beyond"});
+    std::string list = minimalExperiment().dump();
+    const std::string pressures = "[15000.0,25000.0]";
+    ASSERT_NE(list.find(pressures), std::string::npos) << list;
+    list.replace(list.find(pressures), pressures.size(), "[15000.0,-1e400]");
+    expectRefusedText(list, "compaction.pressures[1]", {"compaction.pressures[1]"});
+}
+
+TEST(HostileExperiment, AFolderIsCalledAFolder) {
+    const std::string folder = std::filesystem::temp_directory_path().string();
+    try {
+        readExperimentFile(folder);
+        ADD_FAILURE() << "a folder was accepted";
+    } catch (const ExperimentFileError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("is a folder"), std::string::npos) << what;
+        EXPECT_EQ(what.find("syntax"), std::string::npos) << what;
+    }
+}
+
+} // namespace
+} // namespace grainlab
