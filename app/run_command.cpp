@@ -3,6 +3,8 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -20,6 +22,40 @@ std::atomic<bool> interrupted{false};
 
 extern "C" void onInterrupt(int) { interrupted.store(true); }
 
+/// The test hook (see run_command.h): after this many steps of this process, raise the signal.
+struct TestStop {
+    std::int64_t afterSteps = -1; ///< -1: no test stop
+    int signal = SIGKILL;
+};
+
+TestStop testStopFromEnvironment() {
+    TestStop stop;
+    const char* steps = std::getenv("GRAINLAB_TEST_STOP_AFTER_STEPS");
+    if (!steps || !*steps) {
+        return stop;
+    }
+    char* end = nullptr;
+    const long long n = std::strtoll(steps, &end, 10);
+    if (*end != '\0' || n < 1) {
+        throw std::runtime_error(fmt::format(
+            "GRAINLAB_TEST_STOP_AFTER_STEPS={}: must be a whole number of steps >= 1", steps));
+    }
+    stop.afterSteps = n;
+    const char* name = std::getenv("GRAINLAB_TEST_STOP_SIGNAL");
+    const std::string signalName = name ? name : "KILL";
+    if (signalName == "KILL") {
+        stop.signal = SIGKILL;
+    } else if (signalName == "INT") {
+        stop.signal = SIGINT;
+    } else if (signalName == "TERM") {
+        stop.signal = SIGTERM;
+    } else {
+        throw std::runtime_error(
+            fmt::format("GRAINLAB_TEST_STOP_SIGNAL={}: must be KILL, INT or TERM", signalName));
+    }
+    return stop;
+}
+
 } // namespace
 
 int runExperimentCommand(const RunOptions& options) {
@@ -35,6 +71,13 @@ int runExperimentCommand(const RunOptions& options) {
         }
         config = parseExperimentText(readExperimentText(runFile), runFile + ":/experiment");
         point = RunOutputFolder::readResumePoint(folder);
+        if (ExperimentRunner::finishedAt(point.runnerState)) {
+            // Nothing to run: the files stay exactly as they are.
+            fmt::print("grainlab run: the run in {} is finished; nothing to resume (outputs in "
+                       "{})\n",
+                       folder, folder);
+            return 0;
+        }
     } else {
         config = readExperimentFile(options.experiment);
     }
@@ -54,8 +97,22 @@ int runExperimentCommand(const RunOptions& options) {
     std::int64_t lastStep = runner->progress().step;
     double stepsPerSecond = 0;
     int status = 0;
+    const TestStop stop = testStopFromEnvironment();
+    std::int64_t advanced = 0; // steps of this process (the step count restarts per test)
     try {
-        while (runner->advance(200)) {
+        while (true) {
+            std::int64_t chunk = 200;
+            if (stop.afterSteps > advanced) {
+                chunk = std::min(chunk, stop.afterSteps - advanced);
+            }
+            const bool more = runner->advance(chunk);
+            advanced += chunk;
+            if (advanced == stop.afterSteps) {
+                std::raise(stop.signal);
+            }
+            if (!more) {
+                break;
+            }
             if (interrupted.load()) {
                 runner->checkpointNow("interrupted");
                 bar.finish();
