@@ -18,6 +18,8 @@
 namespace grainlab {
 namespace {
 
+namespace fs = std::filesystem;
+
 std::atomic<bool> interrupted{false};
 
 extern "C" void onInterrupt(int) { interrupted.store(true); }
@@ -61,14 +63,41 @@ TestStop testStopFromEnvironment() {
 int runExperimentCommand(const RunOptions& options) {
     const bool resume = !options.resume.empty();
     const std::string folder = resume ? options.resume : options.out;
+    // The folder is locked before anything in it is read or written; a refusal touches nothing.
+    std::unique_ptr<RunFolderLock> lock;
+    const fs::path runFilePath = fs::path(folder) / "run.h5";
+    try {
+        if (resume) {
+            if (!fs::exists(runFilePath)) {
+                fmt::print(stderr, "grainlab run: --resume {}: no run file {}\n", folder,
+                           runFilePath.string());
+                return 2;
+            }
+            lock = std::make_unique<RunFolderLock>(folder, true);
+        } else {
+            if (fs::exists(RunFolderLock::path(folder))) {
+                lock = std::make_unique<RunFolderLock>(folder, false);
+            }
+            if (fs::exists(runFilePath) && !options.force) {
+                fmt::print(stderr,
+                           "grainlab run: --out {}: that folder already holds a run ({}); "
+                           "continue it with `grainlab run --resume {}`, or give --force to "
+                           "replace it\n",
+                           folder, runFilePath.string(), folder);
+                return 2;
+            }
+            if (!lock) {
+                lock = std::make_unique<RunFolderLock>(folder, true);
+            }
+        }
+    } catch (const std::runtime_error& e) {
+        fmt::print(stderr, "grainlab run: {}\n", e.what());
+        return 2;
+    }
     ExperimentConfig config;
     ResumePoint point;
     if (resume) {
-        const std::string runFile = (std::filesystem::path(folder) / "run.h5").string();
-        if (!std::filesystem::exists(runFile)) {
-            fmt::print(stderr, "grainlab run: --resume {}: no run file {}\n", folder, runFile);
-            return 2;
-        }
+        const std::string runFile = runFilePath.string();
         config = parseExperimentText(readExperimentText(runFile), runFile + ":/experiment");
         point = RunOutputFolder::readResumePoint(folder);
         if (ExperimentRunner::finishedAt(point.runnerState)) {
@@ -80,6 +109,9 @@ int runExperimentCommand(const RunOptions& options) {
         }
     } else {
         config = readExperimentFile(options.experiment);
+        if (options.force) {
+            removeRunFiles(folder); // the old run's files, CSVs too, do not linger
+        }
     }
     if (options.threads > 0) {
         config.parameters.threads = options.threads;

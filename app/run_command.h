@@ -16,6 +16,7 @@ struct RunOptions {
     std::string out;         ///< output folder
     std::string resume;      ///< output folder of a run to continue
     int threads = 0;         ///< 0: as the experiment file says
+    bool force = false;      ///< replace an existing run in `out`
     bool quiet = false;      ///< no progress bar
 };
 

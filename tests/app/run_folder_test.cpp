@@ -105,5 +105,116 @@ TEST(RunFolder, ResumeOfAFinishedRunChangesNothing) {
     fs::remove_all(base);
 }
 
+TEST(RunFolder, ASecondRunIntoALiveFolderIsRefusedAndTouchesNothing) {
+    const fs::path base = freshFolder("live");
+    const fs::path experiment = writeTinyExperiment(base, 0.1); // long enough to stay alive
+    const fs::path out = base / "out";
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        std::freopen("/dev/null", "w", stderr);
+        std::freopen("/dev/null", "w", stdout);
+        execl(GRAINLAB_EXE, GRAINLAB_EXE, "run", experiment.c_str(), "--out", out.c_str(),
+              "--quiet", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    // Wait until the first run is shearing (its test series exists).
+    const fs::path csv = out / "p050kPa" / "series.csv";
+    for (int k = 0; k < 1200 && !fs::exists(csv); ++k) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    ASSERT_TRUE(fs::exists(csv));
+    const auto size = fs::file_size(out / "run.h5");
+    for (const std::string arguments :
+         {fmt::format("run {} --out {} --quiet", experiment.string(), out.string()),
+          fmt::format("run {} --out {} --force --quiet", experiment.string(), out.string()),
+          fmt::format("run --resume {} --quiet", out.string())}) {
+        const Result r = runGrainlab(arguments);
+        EXPECT_EQ(r.status, 2) << arguments << "\n" << r.output;
+        EXPECT_NE(r.output.find("another run owns it"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(out.string()), std::string::npos) << r.output;
+        // The live run's file was not truncated.
+        EXPECT_GE(fs::file_size(out / "run.h5"), size) << arguments;
+    }
+    kill(child, SIGINT);
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130); // interrupted, not an error
+    // The first run's files are whole: it resumes (now that it is gone) from its checkpoint.
+    const auto checkpoints = listCheckpoints((out / "run.h5").string());
+    ASSERT_FALSE(checkpoints.empty());
+    EXPECT_NE(checkpoints.back().find("interrupted"), std::string::npos);
+    const Result again = runGrainlab(fmt::format("run --resume {} --quiet", out.string()));
+    EXPECT_EQ(again.status, 0) << again.output;
+    fs::remove_all(base);
+}
+
+TEST(RunFolder, OutOfAnExistingRunIsRefusedWithoutForce) {
+    const fs::path base = freshFolder("exists");
+    const fs::path experiment = writeTinyExperiment(base);
+    const fs::path out = base / "out";
+    // An interrupted, resumable run.
+    {
+        const std::string command = fmt::format(
+            "GRAINLAB_TEST_STOP_AFTER_STEPS=3000 GRAINLAB_TEST_STOP_SIGNAL=INT {} run {} --out {} "
+            "--quiet > /dev/null 2>&1",
+            GRAINLAB_EXE, experiment.string(), out.string());
+        const int status = std::system(command.c_str());
+        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130);
+    }
+    const auto before = folderBytes(out);
+    const Result r =
+        runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()));
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find(out.string()), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("grainlab run --resume " + out.string()), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("--force"), std::string::npos) << r.output;
+    EXPECT_EQ(folderBytes(out), before) << "a refused run changed the folder";
+    fs::remove_all(base);
+}
+
+TEST(RunFolder, ForceLeavesNoFileOfTheOldRun) {
+    const fs::path base = freshFolder("force");
+    const fs::path out = base / "out";
+    nlohmann::json j = nlohmann::json::parse(readText(writeTinyExperiment(base)));
+    j["compaction"]["pressures"] = {25e3, 50e3};
+    j["shear"]["pressures"] = {25e3, 50e3};
+    const fs::path two = base / "two.json";
+    std::ofstream(two) << j.dump(2);
+    ASSERT_EQ(
+        runGrainlab(fmt::format("run {} --out {} --quiet", two.string(), out.string())).status, 0);
+    ASSERT_TRUE(fs::exists(out / "p025kPa" / "series.csv"));
+    std::ofstream(out / "notes.txt") << "the user's own file";
+    const fs::path one = base / "experiment.json"; // 50 kPa only
+    const Result r =
+        runGrainlab(fmt::format("run {} --out {} --force --quiet", one.string(), out.string()));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_FALSE(fs::exists(out / "p025kPa")) << "the old run's series lingers";
+    EXPECT_TRUE(fs::exists(out / "p050kPa" / "series.csv"));
+    EXPECT_TRUE(fs::exists(out / "notes.txt")) << "--force removed a file that is not the run's";
+    const std::string file = (out / "run.h5").string();
+    EXPECT_EQ(listTests(file), (std::vector<std::string>{"compaction", "p050kPa"}));
+    EXPECT_EQ(listSamples(file), std::vector<double>{50e3});
+    EXPECT_EQ(readExperimentText(file), readText(one));
+    fs::remove_all(base);
+}
+
+TEST(RunFolder, ThreadsOutsideTheirRangeAreRefused) {
+    const fs::path base = freshFolder("threads");
+    const fs::path experiment = writeTinyExperiment(base);
+    for (const char* threads : {"-1", "0", "2147483647", "1.5"}) {
+        const Result r =
+            runGrainlab(fmt::format("run {} --out {} --threads {} --quiet", experiment.string(),
+                                    (base / "out").string(), threads));
+        EXPECT_NE(r.status, 0) << threads;
+        EXPECT_NE(r.output.find("--threads"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("1 to 1024"), std::string::npos) << r.output;
+        EXPECT_FALSE(fs::exists(base / "out")) << threads;
+    }
+    fs::remove_all(base);
+}
+
 } // namespace
 } // namespace grainlab
