@@ -86,6 +86,13 @@ void checkTable(const SeriesTable& t) {
                                                     t.test, name));
         }
     }
+    for (const std::string& stage : t.stages) {
+        if (stage.size() >= hdf5io::kStageTextSize) {
+            throw std::invalid_argument(fmt::format("series {}: stage name \"{}\" is longer than "
+                                                    "{} bytes",
+                                                    t.test, stage, hdf5io::kStageTextSize - 1));
+        }
+    }
     for (std::size_t k = 0; k < t.rows.size(); ++k) {
         if (t.rows[k].size() != t.columns.size()) {
             throw std::invalid_argument(fmt::format("series {}: record {} has {} values for {} "
@@ -93,6 +100,35 @@ void checkTable(const SeriesTable& t) {
                                                     t.test, k, t.rows[k].size(), t.columns.size()));
         }
     }
+}
+
+/// Refuses a file that is not a GrainLab run file of this format version.
+void checkFormatVersion(const H5::H5File& file, const std::string& path) {
+    const H5::Group root = file.openGroup("/");
+    if (!root.attrExists("format_version") || !root.attrExists("software")) {
+        throw std::runtime_error(fmt::format("{}: not a GrainLab run file (no format_version "
+                                             "attribute)",
+                                             path));
+    }
+    const H5::Attribute a = root.openAttribute("format_version");
+    std::int64_t version = -1;
+    if (a.getTypeClass() == H5T_INTEGER && a.getSpace().getSimpleExtentNpoints() == 1) {
+        a.read(H5::PredType::NATIVE_INT64, &version);
+    }
+    if (version != kRunFileFormatVersion) {
+        throw std::runtime_error(fmt::format(
+            "{}: run file format version {}; this GrainLab reads and resumes version {} only "
+            "(run the experiment again to get a file of this version)",
+            path, version, kRunFileFormatVersion));
+    }
+}
+
+/// The 1.8 layouts: superblock 2 and object headers with checksums. (The 1.10 superblock marks
+/// a file open for writing, and a killed run would leave a file no reader may open.)
+H5::FileAccPropList checksummedAccess() {
+    H5::FileAccPropList access;
+    access.setLibverBounds(H5F_LIBVER_V18, H5F_LIBVER_V18);
+    return access;
 }
 
 } // namespace
@@ -142,12 +178,15 @@ void RunFile::Impl::createSeries(H5::Group& test, const SeriesTable& table, Open
     H5::DataSpace space(1, &zero, &unlimited);
     H5::DSetCreatPropList chunked;
     chunked.setChunk(1, &chunk);
+    chunked.setFletcher32();
     for (const auto& c : table.columns) {
         H5::DataSet ds = out.group.createDataSet(c.name, H5Types<double>::file(), space, chunked);
         writeAttribute(ds, "unit", c.unit.empty() ? std::string("-") : c.unit);
+        writeHash(ds, nullptr, 0);
         out.values.push_back(ds);
     }
-    out.stage = out.group.createDataSet("stage", stringType(), space, chunked);
+    out.stage = out.group.createDataSet("stage", fixedStringType(kStageTextSize), space, chunked);
+    writeHash(out.stage, nullptr, 0);
 }
 
 RunFile::Impl::OpenSeries& RunFile::Impl::seriesFor(const SeriesTable& table) {
@@ -193,7 +232,7 @@ RunFile::RunFile(const std::string& path, const std::string& experimentText, Mod
     impl_->path = path;
     guarded(path, mode == Mode::Create ? "creating the run file" : "opening the run file", [&] {
         if (mode == Mode::Create) {
-            impl_->file = H5::H5File(path, H5F_ACC_TRUNC);
+            impl_->file = openFile(path, H5F_ACC_TRUNC, checksummedAccess(), "creating it");
             H5::Group root = impl_->file.openGroup("/");
             writeAttribute(root, "software", std::string("GrainLab"));
             writeAttribute(root, "software_version", std::string(GRAINLAB_VERSION));
@@ -205,7 +244,9 @@ RunFile::RunFile(const std::string& path, const std::string& experimentText, Mod
             root.createGroup("samples");
             impl_->flushNow();
         } else {
-            impl_->file = H5::H5File(path, H5F_ACC_RDWR);
+            impl_->file =
+                openFile(path, H5F_ACC_RDWR, checksummedAccess(), "opening it for writing");
+            checkFormatVersion(impl_->file, path);
             H5::Group root = impl_->file.openGroup("/");
             if (readStringDataset(root, "experiment") != experimentText) {
                 throw std::runtime_error(
@@ -245,7 +286,8 @@ void RunFile::record(const SeriesTable& table) {
         Impl::OpenSeries& s = impl_->seriesFor(table);
         const std::size_t n = table.rows.size();
         // Rows [from, n) are written; fewer rows than the file means the run was rewound.
-        const std::size_t from = n > s.rows ? s.rows : (n == 0 ? 0 : n - 1);
+        // (rewound: all of them, so that the file mirrors the table, checksums included).
+        const std::size_t from = n > s.rows ? s.rows : 0;
         for (std::size_t k = from; k < n; ++k) {
             for (std::size_t c = 0; c < table.columns.size(); ++c) {
                 if (!std::isfinite(table.rows[k][c])) {
@@ -274,14 +316,29 @@ void RunFile::record(const SeriesTable& table) {
                 filespace.selectHyperslab(H5S_SELECT_SET, &count, &start);
                 s.values[c].write(column.data(), H5Types<double>::memory(), memory, filespace);
             }
-            std::vector<const char*> stages;
+            std::vector<char> stages(count * kStageTextSize, '\0');
             for (std::size_t k = 0; k < count; ++k) {
-                stages.push_back(table.stages[from + k].c_str());
+                const std::string& stage = table.stages[from + k];
+                std::copy(stage.begin(), stage.end(), stages.begin() + k * kStageTextSize);
             }
             H5::DataSpace filespace = s.stage.getSpace();
             filespace.selectHyperslab(H5S_SELECT_SET, &count, &start);
-            s.stage.write(stages.data(), stringType(), memory, filespace);
+            s.stage.write(stages.data(), fixedStringType(kStageTextSize), memory, filespace);
         }
+        // The checksums of the whole columns, as they now stand in the file.
+        std::vector<double> column(n);
+        for (std::size_t c = 0; c < s.values.size(); ++c) {
+            for (std::size_t k = 0; k < n; ++k) {
+                column[k] = table.rows[k][c];
+            }
+            writeHash(s.values[c], column.data(), n * sizeof(double));
+        }
+        std::vector<char> stages(n * kStageTextSize, '\0');
+        for (std::size_t k = 0; k < n; ++k) {
+            std::copy(table.stages[k].begin(), table.stages[k].end(),
+                      stages.begin() + k * kStageTextSize);
+        }
+        writeHash(s.stage, stages.data(), stages.size());
         const std::chrono::duration<double> sinceFlush =
             std::chrono::steady_clock::now() - impl_->lastFlush;
         if (sinceFlush.count() >= kRecordFlushSeconds) {
@@ -393,7 +450,9 @@ namespace {
 template <class F>
 auto withFile(const std::string& path, const std::string& what, F&& f) {
     return guarded(path, what, [&] {
-        H5::H5File file(path, H5F_ACC_RDONLY);
+        H5::H5File file =
+            openFile(path, H5F_ACC_RDONLY, H5::FileAccPropList::DEFAULT, "opening it to read");
+        checkFormatVersion(file, path);
         return f(file);
     });
 }
@@ -458,7 +517,8 @@ SeriesTable readSeries(const std::string& path, const std::string& test) {
         const H5::Group g = file.openGroup("tests").openGroup(linkName(test)).openGroup("series");
         SeriesTable table;
         table.test = test;
-        table.stages = readStringArray(g.openDataSet("stage"));
+        table.stages =
+            readStringArray(g.openDataSet("stage"), "dataset " + objectName(g) + "/stage");
         table.rows.assign(table.stages.size(), {});
         for (const auto& name : readStringListAttribute(g, "columns")) {
             const H5::DataSet ds = g.openDataSet(name);

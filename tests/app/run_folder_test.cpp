@@ -216,5 +216,55 @@ TEST(RunFolder, ThreadsOutsideTheirRangeAreRefused) {
     fs::remove_all(base);
 }
 
+TEST(RunFolder, ADamagedRunFileIsRefusedByNameOrResumesToTheSameResult) {
+    const fs::path base = freshFolder("damaged");
+    const fs::path experiment = writeTinyExperiment(base);
+    const fs::path whole = base / "whole";
+    ASSERT_EQ(
+        runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), whole.string()))
+            .status,
+        0);
+    const fs::path stopped = base / "stopped";
+    {
+        const std::string command = fmt::format(
+            "GRAINLAB_TEST_STOP_AFTER_STEPS=9000 GRAINLAB_TEST_STOP_SIGNAL=INT {} run {} --out {} "
+            "--quiet > /dev/null 2>&1",
+            GRAINLAB_EXE, experiment.string(), stopped.string());
+        const int status = std::system(command.c_str());
+        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130);
+    }
+    const std::string bytes = readText(stopped / "run.h5");
+    const auto expected = folderBytes(whole);
+    int refused = 0, resumed = 0;
+    for (int k = 0; k < 24; ++k) {
+        const std::size_t offset = 97 + (bytes.size() - 100) * k / 24;
+        const fs::path copy = base / fmt::format("copy{:02d}", k);
+        fs::copy(stopped, copy, fs::copy_options::recursive);
+        std::string damaged = bytes;
+        damaged[offset] = static_cast<char>(damaged[offset] ^ 0x5a);
+        std::ofstream(copy / "run.h5", std::ios::binary | std::ios::trunc) << damaged;
+        const Result r = runGrainlab(fmt::format("run --resume {} --quiet", copy.string()));
+        ASSERT_GE(r.status, 0) << "byte " << offset << ": crashed\n" << r.output;
+        if (r.status == 0) {
+            // Resumed: every series as in the uninterrupted run.
+            for (const auto& [name, text] : expected) {
+                if (name.ends_with("series.csv")) {
+                    EXPECT_EQ(readText(copy / name), text) << "byte " << offset << ": " << name;
+                }
+            }
+            ++resumed;
+        } else {
+            EXPECT_NE(r.output.find((copy / "run.h5").string()), std::string::npos)
+                << "byte " << offset << ": the error does not name the file\n"
+                << r.output;
+            ++refused;
+        }
+    }
+    EXPECT_GT(refused, 0);
+    std::printf("24 damaged run files: %d refused, %d resumed to the same series\n", refused,
+                resumed);
+    fs::remove_all(base);
+}
+
 } // namespace
 } // namespace grainlab

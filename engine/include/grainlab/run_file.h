@@ -23,8 +23,10 @@
 
 namespace grainlab {
 
-/// Format of the layout written by this version (root attribute `format_version`).
-inline constexpr int kRunFileFormatVersion = 1;
+/// Format of the layout written by this version (root attribute `format_version`). Version 2:
+/// checksummed (Fletcher32) chunked datasets, fixed-length text, stage identity attributes.
+/// Files of another version are refused by every reader, naming the version.
+inline constexpr int kRunFileFormatVersion = 2;
 
 class RunFile : public RunOutput {
 public:
