@@ -117,21 +117,23 @@ int runExperimentCommand(const RunOptions& options) {
         config.parameters.threads = options.threads;
     }
     RunOutputFolder output(folder, config.sourceText, resume);
-    std::unique_ptr<ExperimentRunner> runner =
-        resume ? std::make_unique<ExperimentRunner>(config, std::move(point), &output)
-               : std::make_unique<ExperimentRunner>(config, &output);
+    std::unique_ptr<ExperimentRunner> runner;
 
     interrupted.store(false);
     auto previous = std::signal(SIGINT, onInterrupt);
     auto previousTerm = std::signal(SIGTERM, onInterrupt);
     ProgressBar bar(fmt::format("{} ({} grains)", config.name, config.assembly.grainCount));
     auto last = std::chrono::steady_clock::now();
-    std::int64_t lastStep = runner->progress().step;
+    std::int64_t lastStep = 0;
     double stepsPerSecond = 0;
     int status = 0;
     const TestStop stop = testStopFromEnvironment();
     std::int64_t advanced = 0; // steps of this process (the step count restarts per test)
     try {
+        // A new run writes its first checkpoint here: inside the try, as every later write.
+        runner = resume ? std::make_unique<ExperimentRunner>(config, std::move(point), &output)
+                        : std::make_unique<ExperimentRunner>(config, &output);
+        lastStep = runner->progress().step;
         while (true) {
             std::int64_t chunk = 200;
             if (stop.afterSteps > advanced) {
@@ -180,8 +182,9 @@ int runExperimentCommand(const RunOptions& options) {
         std::signal(SIGTERM, previousTerm);
         fmt::print(stderr,
                    "grainlab run: error: {}\nThe run file {} keeps the last good checkpoint and "
-                   "every series recorded so far.\n",
-                   e.what(), output.runFilePath());
+                   "every series recorded so far. Once the cause is removed (e.g. space freed), "
+                   "continue with: grainlab run --resume {}\n",
+                   e.what(), output.runFilePath(), folder);
         return 1;
     }
     std::signal(SIGINT, previous);

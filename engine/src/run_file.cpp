@@ -4,9 +4,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <ctime>
+#include <filesystem>
+#include <limits>
 #include <map>
 #include <stdexcept>
+
+#include <sys/resource.h>
+#include <sys/statvfs.h>
 
 #include <fmt/format.h>
 
@@ -155,6 +161,65 @@ struct RunFile::Impl {
     void writeStateGroup(const std::string& parent, const std::string& name,
                          const SimulationState& state, const std::string* runnerState,
                          const std::vector<std::pair<std::string, double>>& extra);
+    bool failed = false; ///< a write failed: nothing more is written, the file is left as is
+
+    /// Refuses a write of about `bytes` that the file system (or the file size limit) has no
+    /// room for, before anything of it is written: a write that fails half-way can leave HDF5's
+    /// structures half-updated, and the file unreadable.
+    void ensureRoom(std::uint64_t bytes, const std::string& what) const {
+        constexpr std::uint64_t kMargin = std::uint64_t(1) << 19; // HDF5 metadata, new chunks
+        const std::uint64_t needed = bytes + bytes / 4 + kMargin;
+        std::uint64_t room = std::numeric_limits<std::uint64_t>::max();
+        std::string where;
+        struct statvfs fsinfo {};
+        const std::string folder = std::filesystem::path(path).parent_path().string();
+        if (::statvfs(folder.empty() ? "." : folder.c_str(), &fsinfo) == 0) {
+            room = std::uint64_t(fsinfo.f_bavail) * fsinfo.f_frsize;
+            where = "free on its file system";
+        }
+        struct rlimit limit {};
+        if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+            std::error_code error;
+            const std::uint64_t size = std::filesystem::file_size(path, error);
+            std::uint64_t end = error ? 0 : size;
+            haddr_t eoa = 0;
+            if (H5Fget_filesize(file.getId(), reinterpret_cast<hsize_t*>(&eoa)) >= 0) {
+                end = std::max<std::uint64_t>(end, eoa);
+            }
+            const std::uint64_t left = limit.rlim_cur > end ? limit.rlim_cur - end : 0;
+            if (left < room) {
+                room = left;
+                where = "left under the file size limit";
+            }
+        }
+        if (room < needed) {
+            throw std::runtime_error(fmt::format(
+                "{}: no room to write {} (about {:.1f} MB needed, {:.1f} MB {}); nothing of it "
+                "was written and the file keeps everything written before",
+                path, what, needed / 1e6, room / 1e6, where));
+        }
+    }
+
+    /// Runs a write: refused once a write has failed, and marks the file failed if it throws.
+    template <class F>
+    void write(std::uint64_t bytes, const std::string& what, F&& f) {
+        if (failed) {
+            throw std::runtime_error(
+                fmt::format("{}: an earlier write failed; not writing {}", path, what));
+        }
+        // GRAINLAB_TEST_NO_ROOM_CHECK=1 (tests only): let the write fail in HDF5 itself.
+        static const bool check = std::getenv("GRAINLAB_TEST_NO_ROOM_CHECK") == nullptr;
+        if (check) {
+            ensureRoom(bytes, what);
+        }
+        try {
+            f();
+        } catch (const hdf5io::Hdf5Error&) {
+            failed = true; // the library failed half-way (a full disk); values refused before
+            throw;         // anything was written leave the file usable
+        }
+    }
+
     void flushNow() {
         file.flush(H5F_SCOPE_GLOBAL);
         lastFlush = std::chrono::steady_clock::now();
@@ -263,6 +328,12 @@ RunFile::RunFile(const std::string& path, const std::string& experimentText, Mod
 }
 
 RunFile::~RunFile() {
+    if (impl_->failed) {
+        // After a failed write HDF5's cache holds entries it cannot write; closing would try
+        // again (and has crashed). The file stays as the last successful flush left it.
+        (void)impl_.release();
+        return;
+    }
     try {
         impl_->series.clear();
         impl_->flushNow();
@@ -277,11 +348,17 @@ const std::string& RunFile::path() const {
 }
 
 void RunFile::flush() {
-    guarded(impl_->path, "flushing", [&] { impl_->flushNow(); });
+    impl_->write(0, "pending records",
+                 [&] { guarded(impl_->path, "flushing", [&] { impl_->flushNow(); }); });
 }
 
 void RunFile::record(const SeriesTable& table) {
     checkTable(table);
+    const std::uint64_t bytes = (table.columns.size() * 8 + hdf5io::kStageTextSize) * kSeriesChunk;
+    impl_->write(bytes, "the series of " + table.test, [&] { recordNow(table); });
+}
+
+void RunFile::recordNow(const SeriesTable& table) {
     guarded(impl_->path, "writing the series of " + table.test, [&] {
         Impl::OpenSeries& s = impl_->seriesFor(table);
         const std::size_t n = table.rows.size();
@@ -379,8 +456,25 @@ void RunFile::Impl::writeStateGroup(const std::string& parentName, const std::st
     flushNow();
 }
 
+namespace {
+
+/// Bytes of a state in the run file, roughly (for the room check).
+std::uint64_t stateBytes(const SimulationState& s) {
+    return s.grains.size() * (7 * 8 + 3 * 8) + s.pairs.size() * (4 * 4 + 8 + 1) +
+           s.shapes.size() * 12 * 8 + (std::uint64_t(64) << 10);
+}
+
+} // namespace
+
 void RunFile::checkpoint(const std::string& name, const SimulationState& state,
                          const std::string& runnerState) {
+    // With its void cells (written next): about as many cells as grains / 2.
+    const std::uint64_t bytes = stateBytes(state) + runnerState.size() + state.grains.size() * 64;
+    impl_->write(bytes, "checkpoint " + name, [&] { checkpointNow(name, state, runnerState); });
+}
+
+void RunFile::checkpointNow(const std::string& name, const SimulationState& state,
+                            const std::string& runnerState) {
     try {
         guarded(impl_->path, "writing checkpoint " + name,
                 [&] { impl_->writeStateGroup("checkpoints", name, state, &runnerState, {}); });
@@ -394,6 +488,11 @@ void RunFile::checkpoint(const std::string& name, const SimulationState& state,
 }
 
 void RunFile::sample(double pressure, const SimulationState& state) {
+    impl_->write(stateBytes(state), fmt::format("the sample at {} Pa", pressure),
+                 [&] { sampleNow(pressure, state); });
+}
+
+void RunFile::sampleNow(double pressure, const SimulationState& state) {
     const std::string name = sampleGroup(pressure).substr(std::string("/samples/").size());
     try {
         guarded(impl_->path, "writing sample " + name, [&] {
@@ -409,6 +508,15 @@ void RunFile::sample(double pressure, const SimulationState& state) {
 }
 
 void RunFile::voidCells(const std::string& name, const VoidCellSet& cells) {
+    std::uint64_t grains = 0;
+    for (const VoidCell& c : cells.cells) {
+        grains += c.grains.size();
+    }
+    impl_->write(cells.cells.size() * 56 + grains * 4, "the void cells of checkpoint " + name,
+                 [&] { voidCellsNow(name, cells); });
+}
+
+void RunFile::voidCellsNow(const std::string& name, const VoidCellSet& cells) {
     guarded(impl_->path, "writing the void cells of checkpoint " + name, [&] {
         H5::Group checkpoint = impl_->file.openGroup("checkpoints").openGroup(linkName(name));
         if (checkpoint.nameExists("void_cells")) {

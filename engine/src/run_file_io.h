@@ -99,6 +99,12 @@ inline std::string hdf5Causes() {
 
 /// Turns an HDF5 library exception into std::runtime_error with the file, the operation and
 /// the cause: damage (a checksum that does not match), a file that cannot be locked or opened.
+/// An error of the HDF5 library (as opposed to a value refused before anything was written).
+class Hdf5Error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 [[noreturn]] inline void throwHdf5(const std::string& path, const std::string& what,
                                    const std::string& detail) {
     std::string verdict;
@@ -108,15 +114,14 @@ inline std::string hdf5Causes() {
         verdict = "the file is in use by another program (it cannot be locked); ";
     } else if (detail.find("Permission denied") != std::string::npos) {
         verdict = "no permission to open the file this way; ";
-    } else if (detail.find("open") != std::string::npos &&
-               detail.find("failed") != std::string::npos) {
+    } else if (detail.starts_with("H5") && detail.ends_with("failed")) {
         verdict = "the file is damaged or incomplete (a group, dataset or attribute of the run "
                   "file cannot be opened); ";
     } else if (detail.find("signature") != std::string::npos ||
                detail.find("superblock") != std::string::npos) {
         verdict = "not a readable HDF5 file (damaged or of another kind); ";
     }
-    throw std::runtime_error(fmt::format("{}: {}while {}: {}", path, verdict, what, detail));
+    throw Hdf5Error(fmt::format("{}: {}while {}: {}", path, verdict, what, detail));
 }
 
 [[noreturn]] inline void rethrowHdf5(const std::string& path, const std::string& what,
@@ -151,6 +156,12 @@ auto guarded(const std::string& path, const std::string& what, F&& f) {
         return f();
     } catch (const H5::Exception& e) {
         rethrowHdf5(path, what, e);
+    } catch (const Hdf5Error& e) {
+        const std::string text = e.what();
+        if (text.starts_with(path + ":")) {
+            throw;
+        }
+        throw Hdf5Error(fmt::format("{}: while {}: {}", path, what, text));
     } catch (const std::runtime_error& e) {
         // A check of what was read (or written): name the file and the operation.
         const std::string text = e.what();

@@ -1,6 +1,7 @@
 // The run folder is owned by one run (issue 12): a finished run is not run again, a folder in
 // use is refused untouched, an existing run is not overwritten without --force, and --force
 // leaves none of the old run's files behind.
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -263,6 +264,64 @@ TEST(RunFolder, ADamagedRunFileIsRefusedByNameOrResumesToTheSameResult) {
     EXPECT_GT(refused, 0);
     std::printf("24 damaged run files: %d refused, %d resumed to the same series\n", refused,
                 resumed);
+    fs::remove_all(base);
+}
+
+TEST(RunFolder, AFullDiskStopsTheRunCleanlyAndItResumesExactly) {
+    const fs::path base = freshFolder("full");
+    const fs::path experiment = writeTinyExperiment(base, 0.004);
+    const fs::path whole = base / "whole";
+    ASSERT_EQ(
+        runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), whole.string()))
+            .status,
+        0);
+    const auto size = fs::file_size(whole / "run.h5");
+    // The disk fills at 60 % of the run file: with RLIMIT_FSIZE and SIGXFSZ ignored, a write past
+    // the limit fails with EFBIG, as on a full file system.
+    const fs::path out = base / "out";
+    int pipeFds[2];
+    ASSERT_EQ(::pipe(pipeFds), 0);
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        ::dup2(pipeFds[1], 1);
+        ::dup2(pipeFds[1], 2);
+        std::signal(SIGXFSZ, SIG_IGN);
+        struct rlimit limit {};
+        limit.rlim_cur = limit.rlim_max = size * 6 / 10;
+        ::setrlimit(RLIMIT_FSIZE, &limit);
+        execl(GRAINLAB_EXE, GRAINLAB_EXE, "run", experiment.c_str(), "--out", out.c_str(),
+              "--quiet", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    ::close(pipeFds[1]);
+    std::string output;
+    char buffer[512];
+    for (ssize_t n; (n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0;) {
+        output.append(buffer, std::size_t(n));
+    }
+    ::close(pipeFds[0]);
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status) << "\n" << output;
+    EXPECT_EQ(WEXITSTATUS(status), 1) << output;
+    EXPECT_NE(output.find((out / "run.h5").string()), std::string::npos) << output;
+    EXPECT_NE(output.find("no room"), std::string::npos) << output;
+    EXPECT_NE(output.find("grainlab run --resume " + out.string()), std::string::npos) << output;
+    // Space freed: the run resumes from its last complete checkpoint to the same bits.
+    ASSERT_FALSE(listCheckpoints((out / "run.h5").string()).empty());
+    const Result r = runGrainlab(fmt::format("run --resume {} --quiet", out.string()));
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (const auto& [name, text] : folderBytes(whole)) {
+        if (name.ends_with("series.csv")) {
+            EXPECT_EQ(readText(out / name), text) << name;
+        }
+    }
+    for (const std::string& test : listTests((whole / "run.h5").string())) {
+        EXPECT_EQ(readSeries((whole / "run.h5").string(), test).rows,
+                  readSeries((out / "run.h5").string(), test).rows)
+            << test;
+    }
     fs::remove_all(base);
 }
 

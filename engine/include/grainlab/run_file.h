@@ -62,6 +62,12 @@ public:
     const std::string& path() const;
 
 private:
+    void recordNow(const SeriesTable& series);
+    void checkpointNow(const std::string& name, const SimulationState& state,
+                       const std::string& runnerState);
+    void sampleNow(double pressure, const SimulationState& state);
+    void voidCellsNow(const std::string& name, const VoidCellSet& cells);
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
