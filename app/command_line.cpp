@@ -43,7 +43,13 @@ int runCommandLine(int argc, char** argv) {
     runCommand->add_option("--out", run.out, "output folder (run.h5 and <test>/series.csv)");
     runCommand->add_option("--resume", run.resume,
                            "continue the run in this output folder from its last checkpoint");
-    runCommand->add_option("--threads", run.threads, "threads (default: the experiment's)");
+    // The experiment file's range for `threads` (docs/experiment-file.md).
+    runCommand
+        ->add_option("--threads", run.threads, "threads, 1 to 1024 (default: the experiment's)")
+        ->check(CLI::Range(1, 1024).description("")) // out of range or not a whole number: refused
+        ->type_name("N");
+    runCommand->add_flag("--force", run.force,
+                         "replace the run already in the --out folder (its files are removed)");
     runCommand->add_flag("--quiet", run.quiet, "no progress bar");
 
     StudyOptions study;

@@ -3,6 +3,8 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -17,41 +19,114 @@
 namespace grainlab {
 namespace {
 
+namespace fs = std::filesystem;
+
 std::atomic<bool> interrupted{false};
 
 extern "C" void onInterrupt(int) { interrupted.store(true); }
+
+/// The test hook (see run_command.h): after this many steps of this process, raise the signal.
+struct TestStop {
+    std::int64_t afterSteps = -1; ///< -1: no test stop
+    int signal = SIGKILL;
+};
+
+TestStop testStopFromEnvironment() {
+    TestStop stop;
+    const char* steps = std::getenv("GRAINLAB_TEST_STOP_AFTER_STEPS");
+    if (!steps || !*steps) {
+        return stop;
+    }
+    char* end = nullptr;
+    const long long n = std::strtoll(steps, &end, 10);
+    if (*end != '\0' || n < 1) {
+        throw std::runtime_error(fmt::format(
+            "GRAINLAB_TEST_STOP_AFTER_STEPS={}: must be a whole number of steps >= 1", steps));
+    }
+    stop.afterSteps = n;
+    const char* name = std::getenv("GRAINLAB_TEST_STOP_SIGNAL");
+    const std::string signalName = name ? name : "KILL";
+    if (signalName == "KILL") {
+        stop.signal = SIGKILL;
+    } else if (signalName == "INT") {
+        stop.signal = SIGINT;
+    } else if (signalName == "TERM") {
+        stop.signal = SIGTERM;
+    } else {
+        throw std::runtime_error(
+            fmt::format("GRAINLAB_TEST_STOP_SIGNAL={}: must be KILL, INT or TERM", signalName));
+    }
+    return stop;
+}
 
 } // namespace
 
 int runExperimentCommand(const RunOptions& options) {
     const bool resume = !options.resume.empty();
     const std::string folder = resume ? options.resume : options.out;
+    // The folder is locked before anything in it is read or written; a refusal touches nothing.
+    std::unique_ptr<RunFolderLock> lock;
+    const fs::path runFilePath = fs::path(folder) / "run.h5";
+    try {
+        if (resume) {
+            if (!fs::exists(runFilePath)) {
+                fmt::print(stderr, "grainlab run: --resume {}: no run file {}\n", folder,
+                           runFilePath.string());
+                return 2;
+            }
+            lock = std::make_unique<RunFolderLock>(folder, true);
+        } else {
+            if (fs::exists(RunFolderLock::path(folder))) {
+                lock = std::make_unique<RunFolderLock>(folder, false);
+            }
+            if (fs::exists(runFilePath) && !options.force) {
+                fmt::print(stderr,
+                           "grainlab run: --out {}: that folder already holds a run ({}); "
+                           "continue it with `grainlab run --resume {}`, or give --force to "
+                           "replace it\n",
+                           folder, runFilePath.string(), folder);
+                return 2;
+            }
+            if (!lock) {
+                lock = std::make_unique<RunFolderLock>(folder, true);
+            }
+        }
+    } catch (const std::runtime_error& e) {
+        fmt::print(stderr, "grainlab run: {}\n", e.what());
+        return 2;
+    }
     ExperimentConfig config;
     ResumePoint point;
     if (resume) {
-        const std::string runFile = (std::filesystem::path(folder) / "run.h5").string();
-        if (!std::filesystem::exists(runFile)) {
-            fmt::print(stderr, "grainlab run: --resume {}: no run file {}\n", folder, runFile);
-            return 2;
-        }
+        const std::string runFile = runFilePath.string();
         config = parseExperimentText(readExperimentText(runFile), runFile + ":/experiment");
         point = RunOutputFolder::readResumePoint(folder);
+        if (ExperimentRunner::finishedAt(point.runnerState)) {
+            // Nothing to run: the files stay exactly as they are.
+            fmt::print("grainlab run: the run in {} is finished; nothing to resume (outputs in "
+                       "{})\n",
+                       folder, folder);
+            return 0;
+        }
     } else {
         config = readExperimentFile(options.experiment);
+        if (options.force) {
+            removeRunFiles(folder); // the old run's files, CSVs too, do not linger
+        }
     }
     if (options.threads > 0) {
         config.parameters.threads = options.threads;
     }
     RunOutputFolder output(folder, config.sourceText, resume);
-    std::unique_ptr<ExperimentRunner> runner =
-        resume ? std::make_unique<ExperimentRunner>(config, std::move(point), &output)
-               : std::make_unique<ExperimentRunner>(config, &output);
+    std::unique_ptr<ExperimentRunner> runner;
 
     // What the run costs, beside its run file (cost.json), for the study commands.
     RunCostMeter cost(folder, resume);
     const auto saveCost = [&](bool finished) {
-        cost.save(runner->stepsTaken(), config.assembly.grainCount,
-                  runner->simulation().stateRef().parameters.threads, finished);
+        if (runner) {
+            cost.save(runner->stepsTaken(), config.assembly.grainCount,
+                      runner->simulation().stateRef().parameters.threads, finished);
+        }
     };
 
     interrupted.store(false);
@@ -59,11 +134,29 @@ int runExperimentCommand(const RunOptions& options) {
     auto previousTerm = std::signal(SIGTERM, onInterrupt);
     ProgressBar bar(fmt::format("{} ({} grains)", config.name, config.assembly.grainCount));
     auto last = std::chrono::steady_clock::now();
-    std::int64_t lastStep = runner->progress().step;
+    std::int64_t lastStep = 0;
     double stepsPerSecond = 0;
     int status = 0;
+    const TestStop stop = testStopFromEnvironment();
+    std::int64_t advanced = 0; // steps of this process (the step count restarts per test)
     try {
-        while (runner->advance(200)) {
+        // A new run writes its first checkpoint here: inside the try, as every later write.
+        runner = resume ? std::make_unique<ExperimentRunner>(config, std::move(point), &output)
+                        : std::make_unique<ExperimentRunner>(config, &output);
+        lastStep = runner->progress().step;
+        while (true) {
+            std::int64_t chunk = 200;
+            if (stop.afterSteps > advanced) {
+                chunk = std::min(chunk, stop.afterSteps - advanced);
+            }
+            const bool more = runner->advance(chunk);
+            advanced += chunk;
+            if (advanced == stop.afterSteps) {
+                std::raise(stop.signal);
+            }
+            if (!more) {
+                break;
+            }
             cost.saveEvery(5.0, runner->stepsTaken(), config.assembly.grainCount,
                            runner->simulation().stateRef().parameters.threads);
             if (interrupted.load()) {
@@ -108,8 +201,9 @@ int runExperimentCommand(const RunOptions& options) {
         std::signal(SIGTERM, previousTerm);
         fmt::print(stderr,
                    "grainlab run: error: {}\nThe run file {} keeps the last good checkpoint and "
-                   "every series recorded so far.\n",
-                   e.what(), output.runFilePath());
+                   "every series recorded so far. Once the cause is removed (e.g. space freed), "
+                   "continue with: grainlab run --resume {}\n",
+                   e.what(), output.runFilePath(), folder);
         return 1;
     }
     std::signal(SIGINT, previous);

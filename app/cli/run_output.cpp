@@ -1,5 +1,11 @@
 #include "cli/run_output.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -8,6 +14,62 @@
 namespace grainlab {
 
 namespace fs = std::filesystem;
+
+RunFolderLock::RunFolderLock(const std::string& folder, bool create) {
+    const std::string file = path(folder);
+    if (create) {
+        std::error_code error;
+        fs::create_directories(folder, error);
+        if (error) {
+            throw std::runtime_error(
+                fmt::format("cannot create the run folder {}: {}", folder, error.message()));
+        }
+    }
+    fd_ = ::open(file.c_str(), O_RDWR | O_CLOEXEC | (create ? O_CREAT : 0), 0644);
+    if (fd_ < 0) {
+        throw std::runtime_error(
+            fmt::format("cannot open the lock file {}: {}", file, std::strerror(errno)));
+    }
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+        const int cause = errno;
+        ::close(fd_);
+        fd_ = -1;
+        if (cause == EWOULDBLOCK) {
+            throw std::runtime_error(fmt::format(
+                "the run folder {} is in use: another run owns it (it holds {}); wait for that "
+                "run to end or stop it",
+                folder, file));
+        }
+        throw std::runtime_error(fmt::format("cannot lock {}: {}", file, std::strerror(cause)));
+    }
+}
+
+RunFolderLock::~RunFolderLock() {
+    if (fd_ >= 0) {
+        ::close(fd_); // releases the flock
+    }
+}
+
+std::string RunFolderLock::path(const std::string& folder) {
+    return (fs::path(folder) / "run.lock").string();
+}
+
+void removeRunFiles(const std::string& folder) {
+    fs::remove(fs::path(folder) / "run.h5");
+    fs::remove(fs::path(folder) / "cost.json"); // the old run's cost is not the new one's
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        if (!entry.is_directory()) {
+            continue;
+        }
+        const fs::path csv = entry.path() / "series.csv";
+        if (fs::exists(csv)) {
+            fs::remove(csv);
+            if (fs::is_empty(entry.path())) {
+                fs::remove(entry.path());
+            }
+        }
+    }
+}
 
 RunOutputFolder::RunOutputFolder(const std::string& folder, const std::string& experimentText,
                                  bool resume)

@@ -13,6 +13,29 @@
 
 namespace grainlab {
 
+/// The lock of a run folder: an exclusive flock() on its file run.lock, held while a run owns
+/// the folder (released when the process ends, killed or not). The lock file stays.
+class RunFolderLock {
+public:
+    /// Takes the lock, creating run.lock (and the folder) if `create`. Throws
+    /// std::runtime_error naming the folder when another run holds it, or when run.lock
+    /// cannot be opened (with the cause).
+    RunFolderLock(const std::string& folder, bool create);
+    ~RunFolderLock();
+    RunFolderLock(const RunFolderLock&) = delete;
+    RunFolderLock& operator=(const RunFolderLock&) = delete;
+
+    /// The lock file of `folder`.
+    static std::string path(const std::string& folder);
+
+private:
+    int fd_ = -1;
+};
+
+/// Removes what a run wrote into `folder` (run.h5, cost.json and every <test>/series.csv, with the test
+/// folders left empty), for `grainlab run --force`. Other files stay.
+void removeRunFiles(const std::string& folder);
+
 class RunOutputFolder : public RunOutput {
 public:
     /// Creates `folder` (a new run) or opens it to continue (`resume`).

@@ -66,6 +66,7 @@ struct ExperimentRunner::Impl {
     double lastEps1 = 0, lastEpsv = 0;
     std::int64_t nextRecordStep = 0, nextSnapshotStep = 0;
     std::int64_t checkpointCounter = 0;
+    bool stageDone = false; ///< the stage has ended; the next one is still to start
     std::vector<double> thetaAtTestStart;
     std::map<double, SimulationState> samples;
     std::vector<SeriesTable> series;
@@ -119,7 +120,9 @@ struct ExperimentRunner::Impl {
         if (k == 0) {
             setStrainReference();
         }
-        nextRecordStep = sim->stepCount();
+        // The first record at the first equilibrium check: events fall on whole steps counted
+        // from the stage's start, never where a caller's advance() happens to end.
+        nextRecordStep = stageStartStep + criterion().checkInterval;
         nextSnapshotStep = sim->stepCount() + config.record.snapshotStepInterval;
     }
 
@@ -139,7 +142,9 @@ struct ExperimentRunner::Impl {
         currentSeries = seriesIndex(testName(pressure()));
         setStrainReference();
         thetaAtTestStart = sim->stateRef().grains.theta;
-        nextRecordStep = sim->stepCount();
+        // The first record at the first equilibrium check: events fall on whole steps counted
+        // from the stage's start, never where a caller's advance() happens to end.
+        nextRecordStep = stageStartStep + criterion().checkInterval;
         nextSnapshotStep = sim->stepCount() + config.record.snapshotStepInterval;
     }
 
@@ -231,6 +236,7 @@ struct ExperimentRunner::Impl {
         j["next_record_step"] = nextRecordStep;
         j["next_snapshot_step"] = nextSnapshotStep;
         j["checkpoint_counter"] = checkpointCounter;
+        j["stage_done"] = stageDone;
         j["theta_at_test_start"] = thetaAtTestStart;
         j["current_series"] = currentSeries >= 0 ? series[currentSeries].test : "";
         nlohmann::json rows = nlohmann::json::object();
@@ -257,6 +263,7 @@ struct ExperimentRunner::Impl {
         nextRecordStep = j.at("next_record_step");
         nextSnapshotStep = j.at("next_snapshot_step");
         checkpointCounter = j.at("checkpoint_counter");
+        stageDone = j.at("stage_done");
         thetaAtTestStart = j.at("theta_at_test_start").get<std::vector<double>>();
         const std::string current = j.at("current_series");
         currentSeries = current.empty() ? -1 : seriesIndex(current);
@@ -351,15 +358,9 @@ struct ExperimentRunner::Impl {
             if (output) {
                 output->sample(pressure(), sample);
             }
-            checkpoint(checkpointLabel());
-            if (index + 1 < int(config.compaction.pressures.size())) {
-                startCompaction(index + 1);
-            } else if (!config.shear.pressures.empty()) {
-                startEquilibration(0);
-                checkpoint(checkpointLabel());
-            } else {
-                phase = Phase::Done;
-            }
+            const bool last = index + 1 == int(config.compaction.pressures.size()) &&
+                              config.shear.pressures.empty();
+            stageEndCheckpoint(last);
         } else {
             startShear();
             recordNow(); // eps1 = 0: N_vi
@@ -368,13 +369,34 @@ struct ExperimentRunner::Impl {
         }
     }
 
-    void finishShear() {
-        checkpoint(checkpointLabel());
-        if (index + 1 < int(config.shear.pressures.size())) {
+    void finishShear() { stageEndCheckpoint(index + 1 == int(config.shear.pressures.size())); }
+
+    /// The checkpoint at the end of a compaction stage or a shear test, then the next stage.
+    /// The checkpoint says that its stage is done (stage_done), so that a run resumed from it
+    /// goes on with the next stage (continueAfterStage) instead of running the finished one
+    /// again; after the last stage it holds the finished run (phase Done).
+    void stageEndCheckpoint(bool last) {
+        const std::string label = checkpointLabel();
+        if (last) {
+            phase = Phase::Done;
+        }
+        stageDone = true;
+        checkpoint(label);
+        continueAfterStage();
+    }
+
+    void continueAfterStage() {
+        stageDone = false;
+        if (phase == Phase::Compaction) {
+            if (index + 1 < int(config.compaction.pressures.size())) {
+                startCompaction(index + 1);
+            } else {
+                startEquilibration(0);
+                checkpoint(checkpointLabel());
+            }
+        } else if (phase == Phase::Shear) {
             startEquilibration(index + 1);
             checkpoint(checkpointLabel());
-        } else {
-            phase = Phase::Done;
         }
     }
 
@@ -416,6 +438,9 @@ ExperimentRunner::ExperimentRunner(ExperimentConfig config, RunOutput* output)
     p.threads = threadsFor(c);
     impl_->sim = std::make_unique<Simulation>(generateGridAssembly(c.assembly, p));
     impl_->startCompaction(0);
+    // A checkpoint of the generated assembly: a run killed before its first periodic
+    // checkpoint can still be resumed.
+    impl_->checkpoint(impl_->checkpointLabel());
 }
 
 ExperimentRunner::ExperimentRunner(ExperimentConfig config, ResumePoint resume, RunOutput* output)
@@ -440,6 +465,9 @@ ExperimentRunner::~ExperimentRunner() = default;
 
 bool ExperimentRunner::advance(std::int64_t maxSteps) {
     Impl& m = *impl_;
+    if (m.stageDone) {
+        m.continueAfterStage(); // resumed from a stage-end checkpoint
+    }
     std::int64_t done = 0;
     while (done < maxSteps && m.phase != Phase::Done) {
         const std::int64_t chunk = std::min(m.stepsToNextEvent(), maxSteps - done);
@@ -476,6 +504,10 @@ const Simulation& ExperimentRunner::simulation() const { return *impl_->sim; }
 const std::vector<SeriesTable>& ExperimentRunner::series() const { return impl_->series; }
 
 void ExperimentRunner::checkpointNow(const std::string& name) { impl_->checkpoint(name); }
+
+bool ExperimentRunner::finishedAt(const std::string& runnerState) {
+    return nlohmann::json::parse(runnerState).at("phase").get<int>() == int(Phase::Done);
+}
 
 std::map<std::string, std::size_t>
 ExperimentRunner::seriesRowsAtCheckpoint(const std::string& runnerState) {

@@ -4,9 +4,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <ctime>
+#include <filesystem>
+#include <limits>
 #include <map>
 #include <stdexcept>
+
+#include <sys/resource.h>
+#include <sys/statvfs.h>
 
 #include <fmt/format.h>
 
@@ -86,6 +92,13 @@ void checkTable(const SeriesTable& t) {
                                                     t.test, name));
         }
     }
+    for (const std::string& stage : t.stages) {
+        if (stage.size() >= hdf5io::kStageTextSize) {
+            throw std::invalid_argument(fmt::format("series {}: stage name \"{}\" is longer than "
+                                                    "{} bytes",
+                                                    t.test, stage, hdf5io::kStageTextSize - 1));
+        }
+    }
     for (std::size_t k = 0; k < t.rows.size(); ++k) {
         if (t.rows[k].size() != t.columns.size()) {
             throw std::invalid_argument(fmt::format("series {}: record {} has {} values for {} "
@@ -93,6 +106,35 @@ void checkTable(const SeriesTable& t) {
                                                     t.test, k, t.rows[k].size(), t.columns.size()));
         }
     }
+}
+
+/// Refuses a file that is not a GrainLab run file of this format version.
+void checkFormatVersion(const H5::H5File& file, const std::string& path) {
+    const H5::Group root = file.openGroup("/");
+    if (!root.attrExists("format_version") || !root.attrExists("software")) {
+        throw std::runtime_error(fmt::format("{}: not a GrainLab run file (no format_version "
+                                             "attribute)",
+                                             path));
+    }
+    const H5::Attribute a = root.openAttribute("format_version");
+    std::int64_t version = -1;
+    if (a.getTypeClass() == H5T_INTEGER && a.getSpace().getSimpleExtentNpoints() == 1) {
+        a.read(H5::PredType::NATIVE_INT64, &version);
+    }
+    if (version != kRunFileFormatVersion) {
+        throw std::runtime_error(fmt::format(
+            "{}: run file format version {}; this GrainLab reads and resumes version {} only "
+            "(run the experiment again to get a file of this version)",
+            path, version, kRunFileFormatVersion));
+    }
+}
+
+/// The 1.8 layouts: superblock 2 and object headers with checksums. (The 1.10 superblock marks
+/// a file open for writing, and a killed run would leave a file no reader may open.)
+H5::FileAccPropList checksummedAccess() {
+    H5::FileAccPropList access;
+    access.setLibverBounds(H5F_LIBVER_V18, H5F_LIBVER_V18);
+    return access;
 }
 
 } // namespace
@@ -119,6 +161,65 @@ struct RunFile::Impl {
     void writeStateGroup(const std::string& parent, const std::string& name,
                          const SimulationState& state, const std::string* runnerState,
                          const std::vector<std::pair<std::string, double>>& extra);
+    bool failed = false; ///< a write failed: nothing more is written, the file is left as is
+
+    /// Refuses a write of about `bytes` that the file system (or the file size limit) has no
+    /// room for, before anything of it is written: a write that fails half-way can leave HDF5's
+    /// structures half-updated, and the file unreadable.
+    void ensureRoom(std::uint64_t bytes, const std::string& what) const {
+        constexpr std::uint64_t kMargin = std::uint64_t(1) << 19; // HDF5 metadata, new chunks
+        const std::uint64_t needed = bytes + bytes / 4 + kMargin;
+        std::uint64_t room = std::numeric_limits<std::uint64_t>::max();
+        std::string where;
+        struct statvfs fsinfo {};
+        const std::string folder = std::filesystem::path(path).parent_path().string();
+        if (::statvfs(folder.empty() ? "." : folder.c_str(), &fsinfo) == 0) {
+            room = std::uint64_t(fsinfo.f_bavail) * fsinfo.f_frsize;
+            where = "free on its file system";
+        }
+        struct rlimit limit {};
+        if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+            std::error_code error;
+            const std::uint64_t size = std::filesystem::file_size(path, error);
+            std::uint64_t end = error ? 0 : size;
+            haddr_t eoa = 0;
+            if (H5Fget_filesize(file.getId(), reinterpret_cast<hsize_t*>(&eoa)) >= 0) {
+                end = std::max<std::uint64_t>(end, eoa);
+            }
+            const std::uint64_t left = limit.rlim_cur > end ? limit.rlim_cur - end : 0;
+            if (left < room) {
+                room = left;
+                where = "left under the file size limit";
+            }
+        }
+        if (room < needed) {
+            throw std::runtime_error(fmt::format(
+                "{}: no room to write {} (about {:.1f} MB needed, {:.1f} MB {}); nothing of it "
+                "was written and the file keeps everything written before",
+                path, what, needed / 1e6, room / 1e6, where));
+        }
+    }
+
+    /// Runs a write: refused once a write has failed, and marks the file failed if it throws.
+    template <class F>
+    void write(std::uint64_t bytes, const std::string& what, F&& f) {
+        if (failed) {
+            throw std::runtime_error(
+                fmt::format("{}: an earlier write failed; not writing {}", path, what));
+        }
+        // GRAINLAB_TEST_NO_ROOM_CHECK=1 (tests only): let the write fail in HDF5 itself.
+        static const bool check = std::getenv("GRAINLAB_TEST_NO_ROOM_CHECK") == nullptr;
+        if (check) {
+            ensureRoom(bytes, what);
+        }
+        try {
+            f();
+        } catch (const hdf5io::Hdf5Error&) {
+            failed = true; // the library failed half-way (a full disk); values refused before
+            throw;         // anything was written leave the file usable
+        }
+    }
+
     void flushNow() {
         file.flush(H5F_SCOPE_GLOBAL);
         lastFlush = std::chrono::steady_clock::now();
@@ -142,12 +243,15 @@ void RunFile::Impl::createSeries(H5::Group& test, const SeriesTable& table, Open
     H5::DataSpace space(1, &zero, &unlimited);
     H5::DSetCreatPropList chunked;
     chunked.setChunk(1, &chunk);
+    chunked.setFletcher32();
     for (const auto& c : table.columns) {
         H5::DataSet ds = out.group.createDataSet(c.name, H5Types<double>::file(), space, chunked);
         writeAttribute(ds, "unit", c.unit.empty() ? std::string("-") : c.unit);
+        writeHash(ds, nullptr, 0);
         out.values.push_back(ds);
     }
-    out.stage = out.group.createDataSet("stage", stringType(), space, chunked);
+    out.stage = out.group.createDataSet("stage", fixedStringType(kStageTextSize), space, chunked);
+    writeHash(out.stage, nullptr, 0);
 }
 
 RunFile::Impl::OpenSeries& RunFile::Impl::seriesFor(const SeriesTable& table) {
@@ -193,7 +297,7 @@ RunFile::RunFile(const std::string& path, const std::string& experimentText, Mod
     impl_->path = path;
     guarded(path, mode == Mode::Create ? "creating the run file" : "opening the run file", [&] {
         if (mode == Mode::Create) {
-            impl_->file = H5::H5File(path, H5F_ACC_TRUNC);
+            impl_->file = openFile(path, H5F_ACC_TRUNC, checksummedAccess(), "creating it");
             H5::Group root = impl_->file.openGroup("/");
             writeAttribute(root, "software", std::string("GrainLab"));
             writeAttribute(root, "software_version", std::string(GRAINLAB_VERSION));
@@ -205,7 +309,9 @@ RunFile::RunFile(const std::string& path, const std::string& experimentText, Mod
             root.createGroup("samples");
             impl_->flushNow();
         } else {
-            impl_->file = H5::H5File(path, H5F_ACC_RDWR);
+            impl_->file =
+                openFile(path, H5F_ACC_RDWR, checksummedAccess(), "opening it for writing");
+            checkFormatVersion(impl_->file, path);
             H5::Group root = impl_->file.openGroup("/");
             if (readStringDataset(root, "experiment") != experimentText) {
                 throw std::runtime_error(
@@ -222,6 +328,12 @@ RunFile::RunFile(const std::string& path, const std::string& experimentText, Mod
 }
 
 RunFile::~RunFile() {
+    if (impl_->failed) {
+        // After a failed write HDF5's cache holds entries it cannot write; closing would try
+        // again (and has crashed). The file stays as the last successful flush left it.
+        (void)impl_.release();
+        return;
+    }
     try {
         impl_->series.clear();
         impl_->flushNow();
@@ -236,16 +348,23 @@ const std::string& RunFile::path() const {
 }
 
 void RunFile::flush() {
-    guarded(impl_->path, "flushing", [&] { impl_->flushNow(); });
+    impl_->write(0, "pending records",
+                 [&] { guarded(impl_->path, "flushing", [&] { impl_->flushNow(); }); });
 }
 
 void RunFile::record(const SeriesTable& table) {
     checkTable(table);
+    const std::uint64_t bytes = (table.columns.size() * 8 + hdf5io::kStageTextSize) * kSeriesChunk;
+    impl_->write(bytes, "the series of " + table.test, [&] { recordNow(table); });
+}
+
+void RunFile::recordNow(const SeriesTable& table) {
     guarded(impl_->path, "writing the series of " + table.test, [&] {
         Impl::OpenSeries& s = impl_->seriesFor(table);
         const std::size_t n = table.rows.size();
         // Rows [from, n) are written; fewer rows than the file means the run was rewound.
-        const std::size_t from = n > s.rows ? s.rows : (n == 0 ? 0 : n - 1);
+        // (rewound: all of them, so that the file mirrors the table, checksums included).
+        const std::size_t from = n > s.rows ? s.rows : 0;
         for (std::size_t k = from; k < n; ++k) {
             for (std::size_t c = 0; c < table.columns.size(); ++c) {
                 if (!std::isfinite(table.rows[k][c])) {
@@ -274,14 +393,29 @@ void RunFile::record(const SeriesTable& table) {
                 filespace.selectHyperslab(H5S_SELECT_SET, &count, &start);
                 s.values[c].write(column.data(), H5Types<double>::memory(), memory, filespace);
             }
-            std::vector<const char*> stages;
+            std::vector<char> stages(count * kStageTextSize, '\0');
             for (std::size_t k = 0; k < count; ++k) {
-                stages.push_back(table.stages[from + k].c_str());
+                const std::string& stage = table.stages[from + k];
+                std::copy(stage.begin(), stage.end(), stages.begin() + k * kStageTextSize);
             }
             H5::DataSpace filespace = s.stage.getSpace();
             filespace.selectHyperslab(H5S_SELECT_SET, &count, &start);
-            s.stage.write(stages.data(), stringType(), memory, filespace);
+            s.stage.write(stages.data(), fixedStringType(kStageTextSize), memory, filespace);
         }
+        // The checksums of the whole columns, as they now stand in the file.
+        std::vector<double> column(n);
+        for (std::size_t c = 0; c < s.values.size(); ++c) {
+            for (std::size_t k = 0; k < n; ++k) {
+                column[k] = table.rows[k][c];
+            }
+            writeHash(s.values[c], column.data(), n * sizeof(double));
+        }
+        std::vector<char> stages(n * kStageTextSize, '\0');
+        for (std::size_t k = 0; k < n; ++k) {
+            std::copy(table.stages[k].begin(), table.stages[k].end(),
+                      stages.begin() + k * kStageTextSize);
+        }
+        writeHash(s.stage, stages.data(), stages.size());
         const std::chrono::duration<double> sinceFlush =
             std::chrono::steady_clock::now() - impl_->lastFlush;
         if (sinceFlush.count() >= kRecordFlushSeconds) {
@@ -322,8 +456,25 @@ void RunFile::Impl::writeStateGroup(const std::string& parentName, const std::st
     flushNow();
 }
 
+namespace {
+
+/// Bytes of a state in the run file, roughly (for the room check).
+std::uint64_t stateBytes(const SimulationState& s) {
+    return s.grains.size() * (7 * 8 + 3 * 8) + s.pairs.size() * (4 * 4 + 8 + 1) +
+           s.shapes.size() * 12 * 8 + (std::uint64_t(64) << 10);
+}
+
+} // namespace
+
 void RunFile::checkpoint(const std::string& name, const SimulationState& state,
                          const std::string& runnerState) {
+    // With its void cells (written next): about as many cells as grains / 2.
+    const std::uint64_t bytes = stateBytes(state) + runnerState.size() + state.grains.size() * 64;
+    impl_->write(bytes, "checkpoint " + name, [&] { checkpointNow(name, state, runnerState); });
+}
+
+void RunFile::checkpointNow(const std::string& name, const SimulationState& state,
+                            const std::string& runnerState) {
     try {
         guarded(impl_->path, "writing checkpoint " + name,
                 [&] { impl_->writeStateGroup("checkpoints", name, state, &runnerState, {}); });
@@ -337,6 +488,11 @@ void RunFile::checkpoint(const std::string& name, const SimulationState& state,
 }
 
 void RunFile::sample(double pressure, const SimulationState& state) {
+    impl_->write(stateBytes(state), fmt::format("the sample at {} Pa", pressure),
+                 [&] { sampleNow(pressure, state); });
+}
+
+void RunFile::sampleNow(double pressure, const SimulationState& state) {
     const std::string name = sampleGroup(pressure).substr(std::string("/samples/").size());
     try {
         guarded(impl_->path, "writing sample " + name, [&] {
@@ -352,6 +508,15 @@ void RunFile::sample(double pressure, const SimulationState& state) {
 }
 
 void RunFile::voidCells(const std::string& name, const VoidCellSet& cells) {
+    std::uint64_t grains = 0;
+    for (const VoidCell& c : cells.cells) {
+        grains += c.grains.size();
+    }
+    impl_->write(cells.cells.size() * 56 + grains * 4, "the void cells of checkpoint " + name,
+                 [&] { voidCellsNow(name, cells); });
+}
+
+void RunFile::voidCellsNow(const std::string& name, const VoidCellSet& cells) {
     guarded(impl_->path, "writing the void cells of checkpoint " + name, [&] {
         H5::Group checkpoint = impl_->file.openGroup("checkpoints").openGroup(linkName(name));
         if (checkpoint.nameExists("void_cells")) {
@@ -393,7 +558,9 @@ namespace {
 template <class F>
 auto withFile(const std::string& path, const std::string& what, F&& f) {
     return guarded(path, what, [&] {
-        H5::H5File file(path, H5F_ACC_RDONLY);
+        H5::H5File file =
+            openFile(path, H5F_ACC_RDONLY, H5::FileAccPropList::DEFAULT, "opening it to read");
+        checkFormatVersion(file, path);
         return f(file);
     });
 }
@@ -458,7 +625,8 @@ SeriesTable readSeries(const std::string& path, const std::string& test) {
         const H5::Group g = file.openGroup("tests").openGroup(linkName(test)).openGroup("series");
         SeriesTable table;
         table.test = test;
-        table.stages = readStringArray(g.openDataSet("stage"));
+        table.stages =
+            readStringArray(g.openDataSet("stage"), "dataset " + objectName(g) + "/stage");
         table.rows.assign(table.stages.size(), {});
         for (const auto& name : readStringListAttribute(g, "columns")) {
             const H5::DataSet ds = g.openDataSet(name);

@@ -45,11 +45,20 @@ struct H5Types<std::uint8_t> {
     static const H5::PredType& file() { return H5::PredType::STD_U8LE; }
 };
 
-inline H5::StrType stringType() {
-    H5::StrType t(H5::PredType::C_S1, H5T_VARIABLE);
+/// Text is stored as fixed-length UTF-8 strings (NUL-padded): in the checksummed object
+/// headers (attributes) or checksummed chunks (datasets). Variable-length strings live in the
+/// global heap, which has no checksum, and a damaged heap reference crashed a reader.
+inline H5::StrType fixedStringType(std::size_t size) {
+    H5::StrType t(H5::PredType::C_S1, std::max<std::size_t>(1, size));
     t.setCset(H5T_CSET_UTF8);
+    t.setStrpad(H5T_STR_NULLPAD);
     return t;
 }
+
+/// Bytes of one stage name in a series' `stage` column.
+inline constexpr std::size_t kStageTextSize = 64;
+/// Largest text a reader accepts (the experiment file, the runner state) [bytes].
+inline constexpr std::size_t kMaxTextSize = std::size_t(1) << 28;
 
 /// Group and dataset names may not contain '/'.
 inline std::string linkName(const std::string& name) {
@@ -65,11 +74,79 @@ inline std::string linkName(const std::string& name) {
     return out;
 }
 
-/// Turns an HDF5 library exception into std::runtime_error with the file and the operation.
+/// The messages of the HDF5 error stack, innermost last, e.g. "unable to lock file, errno =
+/// 11" or "data error detected by Fletcher32 checksum".
+inline std::string hdf5Causes() {
+    std::vector<std::string> messages;
+    H5Ewalk2(
+        H5E_DEFAULT, H5E_WALK_UPWARD,
+        [](unsigned, const H5E_error2_t* e, void* data) -> herr_t {
+            auto* out = static_cast<std::vector<std::string>*>(data);
+            if (e->desc && *e->desc && out->size() < 8) {
+                out->emplace_back(e->desc);
+            }
+            return 0;
+        },
+        &messages);
+    std::string out;
+    for (const auto& m : messages) {
+        if (out.find(m) == std::string::npos) {
+            out += (out.empty() ? "" : "; ") + m;
+        }
+    }
+    return out;
+}
+
+/// Turns an HDF5 library exception into std::runtime_error with the file, the operation and
+/// the cause: damage (a checksum that does not match), a file that cannot be locked or opened.
+/// An error of the HDF5 library (as opposed to a value refused before anything was written).
+class Hdf5Error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] inline void throwHdf5(const std::string& path, const std::string& what,
+                                   const std::string& detail) {
+    std::string verdict;
+    if (detail.find("checksum") != std::string::npos) {
+        verdict = "the file is damaged (a checksum does not match); ";
+    } else if (detail.find("lock") != std::string::npos) {
+        verdict = "the file is in use by another program (it cannot be locked); ";
+    } else if (detail.find("Permission denied") != std::string::npos) {
+        verdict = "no permission to open the file this way; ";
+    } else if (detail.starts_with("H5") && detail.ends_with("failed")) {
+        verdict = "the file is damaged or incomplete (a group, dataset or attribute of the run "
+                  "file cannot be opened); ";
+    } else if (detail.find("signature") != std::string::npos ||
+               detail.find("superblock") != std::string::npos) {
+        verdict = "not a readable HDF5 file (damaged or of another kind); ";
+    }
+    throw Hdf5Error(fmt::format("{}: {}while {}: {}", path, verdict, what, detail));
+}
+
 [[noreturn]] inline void rethrowHdf5(const std::string& path, const std::string& what,
                                      const H5::Exception& e) {
-    throw std::runtime_error(fmt::format("{}: HDF5 error while {}: {} ({})", path, what,
-                                         e.getDetailMsg(), e.getFuncName()));
+    const std::string causes = hdf5Causes();
+    throwHdf5(path, what, causes.empty() ? e.getDetailMsg() : causes);
+}
+
+/// Opens (flags H5F_ACC_RDONLY or H5F_ACC_RDWR) or creates (H5F_ACC_TRUNC) a file through the
+/// C API, so that the cause (lock, permission, damage) is read off the error stack before the
+/// C++ wrapper clears it.
+inline H5::H5File openFile(const std::string& path, unsigned flags,
+                           const H5::FileAccPropList& access, const std::string& what) {
+    H5::Exception::dontPrint();
+    const hid_t id = flags == H5F_ACC_TRUNC
+                         ? H5Fcreate(path.c_str(), flags, H5P_DEFAULT, access.getId())
+                         : H5Fopen(path.c_str(), flags, access.getId());
+    if (id < 0) {
+        const std::string causes = hdf5Causes();
+        H5Eclear2(H5E_DEFAULT);
+        throwHdf5(path, what, causes.empty() ? "the HDF5 library gave no cause" : causes);
+    }
+    H5::H5File file(id); // takes a reference of its own
+    H5Idec_ref(id);
+    return file;
 }
 
 template <class F>
@@ -79,19 +156,93 @@ auto guarded(const std::string& path, const std::string& what, F&& f) {
         return f();
     } catch (const H5::Exception& e) {
         rethrowHdf5(path, what, e);
+    } catch (const Hdf5Error& e) {
+        const std::string text = e.what();
+        if (text.starts_with(path + ":")) {
+            throw;
+        }
+        throw Hdf5Error(fmt::format("{}: while {}: {}", path, what, text));
+    } catch (const std::runtime_error& e) {
+        // A check of what was read (or written): name the file and the operation.
+        const std::string text = e.what();
+        if (text.starts_with(path + ":")) {
+            throw;
+        }
+        throw std::runtime_error(fmt::format("{}: while {}: {}", path, what, text));
     }
+}
+
+/// Full name of an object, for messages ("/checkpoints/000001-x/grains").
+inline std::string objectName(const H5::IdComponent& object) {
+    char name[1024] = {};
+    const ssize_t n = H5Iget_name(object.getId(), name, sizeof name);
+    return n > 0 ? std::string(name) : std::string("?");
+}
+
+/// Checksummed, chunked layout of a one-dimensional dataset of `n` values.
+inline H5::DSetCreatPropList checksummedLayout(hsize_t n) {
+    H5::DSetCreatPropList p;
+    const hsize_t chunk = std::clamp<hsize_t>(n, 1, 65536);
+    p.setChunk(1, &chunk);
+    p.setFletcher32();
+    return p;
+}
+
+/// FNV-1a of a buffer: stored with every dataset (attribute `checksum`) and checked on reading.
+/// Fletcher32 checks each chunk, but not that the chunk index points at the right chunk (a
+/// chunk of zeros has a zero Fletcher32).
+inline std::int64_t contentHash(const void* data, std::size_t bytes) {
+    std::uint64_t h = 1469598103934665603ull;
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) {
+        h = (h ^ p[i]) * 1099511628211ull;
+    }
+    h ^= bytes;
+    return static_cast<std::int64_t>(h);
 }
 
 // ---- attributes ----------------------------------------------------------------------------
 
 inline void writeAttribute(H5::H5Object& object, const std::string& name,
                            const std::string& value) {
-    const H5::StrType t = stringType();
+    const H5::StrType t = fixedStringType(value.size());
     if (object.attrExists(name)) {
         object.removeAttr(name);
     }
     H5::Attribute a = object.createAttribute(name, t, H5::DataSpace(H5S_SCALAR));
-    a.write(t, value);
+    std::vector<char> buffer(t.getSize(), '\0');
+    std::copy(value.begin(), value.end(), buffer.begin());
+    a.write(t, buffer.data());
+}
+
+/// Checks that `type` is a fixed-length string type of at most `maxSize` bytes.
+inline std::size_t checkedTextSize(const H5::DataType& type, const std::string& what,
+                                   std::size_t maxSize) {
+    if (type.getClass() != H5T_STRING) {
+        throw std::runtime_error(fmt::format("{} is not text", what));
+    }
+    const H5::StrType t(type.getId());
+    if (t.isVariableStr()) {
+        throw std::runtime_error(
+            fmt::format("{} is variable-length text, which this format does not write", what));
+    }
+    const std::size_t size = t.getSize();
+    if (size == 0 || size > maxSize) {
+        throw std::runtime_error(fmt::format("{} has a text size of {} bytes", what, size));
+    }
+    return size;
+}
+
+/// Text of `count` fixed-length strings of `size` bytes, each up to its first NUL.
+inline std::vector<std::string> splitFixedText(const std::vector<char>& buffer, std::size_t size,
+                                               std::size_t count) {
+    std::vector<std::string> out;
+    for (std::size_t k = 0; k < count; ++k) {
+        const char* begin = buffer.data() + k * size;
+        const char* end = std::find(begin, begin + size, '\0');
+        out.emplace_back(begin, end);
+    }
+    return out;
 }
 
 template <class T>
@@ -112,28 +263,66 @@ void writeAttribute(H5::H5Object& object, const std::string& name, T value) {
 
 inline std::string readStringAttribute(const H5::H5Object& object, const std::string& name) {
     H5::Attribute a = object.openAttribute(name);
-    std::string value;
-    a.read(a.getStrType(), value);
-    return value;
+    const std::string what = fmt::format("attribute {} of {}", name, objectName(object));
+    const H5::DataType type = a.getDataType();
+    const std::size_t size = checkedTextSize(type, what, kMaxTextSize);
+    if (a.getSpace().getSimpleExtentNpoints() != 1) {
+        throw std::runtime_error(fmt::format("{} is not a single text", what));
+    }
+    std::vector<char> buffer(size, '\0');
+    a.read(type, buffer.data());
+    return splitFixedText(buffer, size, 1).front();
 }
 
 template <class T>
 T readAttribute(const H5::H5Object& object, const std::string& name) {
     H5::Attribute a = object.openAttribute(name);
+    const std::string what = fmt::format("attribute {} of {}", name, objectName(object));
     if (a.getSpace().getSimpleExtentNpoints() != 1) {
-        throw std::runtime_error(fmt::format("attribute {} is not a scalar", name));
+        throw std::runtime_error(fmt::format("{} is not a scalar", what));
+    }
+    const H5T_class_t expected = std::is_floating_point_v<T> ? H5T_FLOAT : H5T_INTEGER;
+    if (a.getTypeClass() != expected) {
+        throw std::runtime_error(
+            fmt::format("{} is not {}", what, expected == H5T_FLOAT ? "a number" : "an integer"));
     }
     T value{};
     a.read(H5Types<T>::memory(), &value);
+    if constexpr (std::is_floating_point_v<T>) {
+        if (!std::isfinite(value)) {
+            throw std::runtime_error(fmt::format("{} is not finite", what));
+        }
+    }
     return value;
+}
+
+inline void writeHash(H5::H5Object& object, const void* data, std::size_t bytes) {
+    writeAttribute(object, "checksum", contentHash(data, bytes));
+}
+
+/// Refuses values whose hash is not the one stored with them.
+inline void checkHash(const H5::H5Object& object, const std::string& what, const void* data,
+                      std::size_t bytes) {
+    if (!object.attrExists("checksum")) {
+        throw std::runtime_error(fmt::format("{} has no checksum attribute", what));
+    }
+    if (readAttribute<std::int64_t>(object, "checksum") != contentHash(data, bytes)) {
+        throw std::runtime_error(fmt::format("{}: the file is damaged (its values do not match "
+                                             "their checksum)",
+                                             what));
+    }
 }
 
 inline void writeStringListAttribute(H5::H5Object& object, const std::string& name,
                                      const std::vector<std::string>& values) {
-    const H5::StrType t = stringType();
-    std::vector<const char*> pointers;
+    std::size_t size = 1;
     for (const auto& v : values) {
-        pointers.push_back(v.c_str());
+        size = std::max(size, v.size());
+    }
+    const H5::StrType t = fixedStringType(size);
+    std::vector<char> buffer(size * values.size(), '\0');
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        std::copy(values[k].begin(), values[k].end(), buffer.begin() + k * size);
     }
     if (object.attrExists(name)) {
         object.removeAttr(name);
@@ -141,27 +330,25 @@ inline void writeStringListAttribute(H5::H5Object& object, const std::string& na
     const hsize_t n = values.size();
     H5::Attribute a = object.createAttribute(name, t, H5::DataSpace(1, &n));
     if (n > 0) {
-        a.write(t, pointers.data());
+        a.write(t, buffer.data());
     }
 }
 
 inline std::vector<std::string> readStringListAttribute(const H5::H5Object& object,
                                                         const std::string& name) {
     H5::Attribute a = object.openAttribute(name);
-    const H5::StrType t = stringType();
-    H5::DataSpace space = a.getSpace();
-    const auto n = static_cast<std::size_t>(space.getSimpleExtentNpoints());
-    std::vector<char*> buffer(n, nullptr);
-    std::vector<std::string> out;
-    if (n == 0) {
-        return out;
+    const std::string what = fmt::format("attribute {} of {}", name, objectName(object));
+    const H5::DataType type = a.getDataType();
+    const std::size_t size = checkedTextSize(type, what, 4096);
+    const auto n = static_cast<std::size_t>(a.getSpace().getSimpleExtentNpoints());
+    if (n > 4096) {
+        throw std::runtime_error(fmt::format("{} has {} texts", what, n));
     }
-    a.read(t, buffer.data());
-    for (char* s : buffer) {
-        out.emplace_back(s ? s : "");
+    std::vector<char> buffer(size * n, '\0');
+    if (n > 0) {
+        a.read(type, buffer.data());
     }
-    H5Dvlen_reclaim(t.getId(), space.getId(), H5P_DEFAULT, buffer.data());
-    return out;
+    return splitFixedText(buffer, size, n);
 }
 
 // ---- fixed-size datasets -------------------------------------------------------------------
@@ -179,11 +366,15 @@ void writeArray(H5::Group& group, const std::string& name, const T* data, std::s
             }
         }
     }
-    const hsize_t dims = n;
-    H5::DataSet ds = group.createDataSet(name, H5Types<T>::file(), H5::DataSpace(1, &dims));
+    const hsize_t dims = n, unlimited = H5S_UNLIMITED;
+    // An empty dataset is extendible (a chunk may not exceed fixed dimensions of 0).
+    const H5::DataSpace space =
+        n > 0 ? H5::DataSpace(1, &dims) : H5::DataSpace(1, &dims, &unlimited);
+    H5::DataSet ds = group.createDataSet(name, H5Types<T>::file(), space, checksummedLayout(n));
     if (n > 0) {
         ds.write(data, H5Types<T>::memory());
     }
+    writeHash(ds, data, n * sizeof(T));
     if (unit) {
         writeAttribute(ds, "unit", std::string(unit));
     }
@@ -204,13 +395,31 @@ void writeArray(H5::Group& group, const std::string& name, const std::array<T, N
 template <class T>
 std::vector<T> readArray(const H5::Group& group, const std::string& name) {
     H5::DataSet ds = group.openDataSet(name);
+    const std::string what = fmt::format("dataset {}/{}", objectName(group), name);
     H5::DataSpace space = ds.getSpace();
     if (space.getSimpleExtentNdims() != 1) {
-        throw std::runtime_error(fmt::format("dataset {} is not one-dimensional", name));
+        throw std::runtime_error(fmt::format("{} is not one-dimensional", what));
+    }
+    const H5T_class_t expected = std::is_floating_point_v<T> ? H5T_FLOAT : H5T_INTEGER;
+    if (ds.getTypeClass() != expected) {
+        throw std::runtime_error(
+            fmt::format("{} is not {}", what, expected == H5T_FLOAT ? "numbers" : "integers"));
     }
     std::vector<T> values(static_cast<std::size_t>(space.getSimpleExtentNpoints()));
     if (!values.empty()) {
-        ds.read(values.data(), H5Types<T>::memory());
+        try {
+            ds.read(values.data(), H5Types<T>::memory());
+        } catch (const H5::Exception& e) {
+            rethrowHdf5(what, "reading it", e);
+        }
+    }
+    checkHash(ds, what, values.data(), values.size() * sizeof(T));
+    if constexpr (std::is_floating_point_v<T>) {
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            if (!std::isfinite(values[i])) {
+                throw std::runtime_error(fmt::format("{}[{}] is not finite", what, i));
+            }
+        }
     }
     return values;
 }
@@ -227,34 +436,54 @@ std::array<T, N> readFixed(const H5::Group& group, const std::string& name) {
     return out;
 }
 
+/// A text as a one-element dataset of one fixed-length string, chunked and checksummed.
 inline void writeStringDataset(H5::Group& group, const std::string& name, const std::string& text) {
-    const H5::StrType t = stringType();
-    H5::DataSet ds = group.createDataSet(name, t, H5::DataSpace(H5S_SCALAR));
-    ds.write(text, t);
+    const H5::StrType t = fixedStringType(text.size());
+    const hsize_t one = 1;
+    H5::DataSet ds = group.createDataSet(name, t, H5::DataSpace(1, &one), checksummedLayout(1));
+    std::vector<char> buffer(t.getSize(), '\0');
+    std::copy(text.begin(), text.end(), buffer.begin());
+    ds.write(buffer.data(), t);
+    writeHash(ds, buffer.data(), buffer.size());
 }
 
 inline std::string readStringDataset(const H5::Group& group, const std::string& name) {
     H5::DataSet ds = group.openDataSet(name);
-    std::string text;
-    ds.read(text, ds.getStrType());
-    return text;
+    const std::string what = fmt::format("dataset {}/{}", objectName(group), name);
+    const H5::DataType type = ds.getDataType();
+    const std::size_t size = checkedTextSize(type, what, kMaxTextSize);
+    if (ds.getSpace().getSimpleExtentNpoints() != 1) {
+        throw std::runtime_error(fmt::format("{} is not a single text", what));
+    }
+    std::vector<char> buffer(size, '\0');
+    try {
+        ds.read(buffer.data(), type);
+    } catch (const H5::Exception& e) {
+        rethrowHdf5(what, "reading it", e);
+    }
+    checkHash(ds, what, buffer.data(), buffer.size());
+    return splitFixedText(buffer, size, 1).front();
 }
 
-inline std::vector<std::string> readStringArray(const H5::DataSet& ds) {
-    const H5::StrType t = stringType();
+/// The fixed-length strings of a one-dimensional text dataset (a series' stage column).
+inline std::vector<std::string> readStringArray(const H5::DataSet& ds, const std::string& what) {
+    const H5::DataType type = ds.getDataType();
+    const std::size_t size = checkedTextSize(type, what, 4096);
     H5::DataSpace space = ds.getSpace();
+    if (space.getSimpleExtentNdims() != 1) {
+        throw std::runtime_error(fmt::format("{} is not one-dimensional", what));
+    }
     const auto n = static_cast<std::size_t>(space.getSimpleExtentNpoints());
-    std::vector<std::string> out;
-    if (n == 0) {
-        return out;
+    std::vector<char> buffer(size * n, '\0');
+    if (n > 0) {
+        try {
+            ds.read(buffer.data(), type);
+        } catch (const H5::Exception& e) {
+            rethrowHdf5(what, "reading it", e);
+        }
     }
-    std::vector<char*> buffer(n, nullptr);
-    ds.read(buffer.data(), t);
-    for (char* s : buffer) {
-        out.emplace_back(s ? s : "");
-    }
-    H5Dvlen_reclaim(t.getId(), space.getId(), H5P_DEFAULT, buffer.data());
-    return out;
+    checkHash(ds, what, buffer.data(), buffer.size());
+    return splitFixedText(buffer, size, n);
 }
 
 // ---- the state layout (run_file_state.cpp) --------------------------------------------------

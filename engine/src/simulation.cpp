@@ -145,7 +145,16 @@ Simulation::Simulation(SimulationState state) : s_(std::move(state)) {
     } else {
         rebuildNeighbours();
     }
-    evaluateForces(false);
+    // The forces of the stored state through the very code of a step (its increment kernel with
+    // a zero time step, which leaves every stored f_t as it is): another instantiation may be
+    // compiled with other rounding (FMA contraction), and a restart would then differ in the
+    // last bits from the run that wrote the checkpoint. The sliding flags stay as stored.
+    const double timeStep = s_.parameters.timeStep;
+    const std::vector<std::uint8_t> sliding = s_.pairs.sliding;
+    s_.parameters.timeStep = 0.0;
+    evaluateForces(true);
+    s_.parameters.timeStep = timeStep;
+    s_.pairs.sliding = sliding;
 }
 
 void Simulation::derive() {

@@ -88,6 +88,8 @@ public:
     std::shared_ptr<Snapshot> snapshot(SnapshotMeasures measures = SnapshotMeasures::Now) const;
     /// Writes a checkpoint of now through the output (e.g. on Ctrl-C).
     void checkpointNow(const std::string& name);
+    /// True when a runner state string holds a finished run (its last checkpoint).
+    static bool finishedAt(const std::string& runnerState);
     /// Rows per test in a runner state string: what a resumed run keeps of each series.
     static std::map<std::string, std::size_t> seriesRowsAtCheckpoint(const std::string& runnerState);
 

@@ -23,8 +23,10 @@
 
 namespace grainlab {
 
-/// Format of the layout written by this version (root attribute `format_version`).
-inline constexpr int kRunFileFormatVersion = 1;
+/// Format of the layout written by this version (root attribute `format_version`). Version 2:
+/// checksummed (Fletcher32) chunked datasets, fixed-length text, stage identity attributes.
+/// Files of another version are refused by every reader, naming the version.
+inline constexpr int kRunFileFormatVersion = 2;
 
 class RunFile : public RunOutput {
 public:
@@ -60,6 +62,12 @@ public:
     const std::string& path() const;
 
 private:
+    void recordNow(const SeriesTable& series);
+    void checkpointNow(const std::string& name, const SimulationState& state,
+                       const std::string& runnerState);
+    void sampleNow(double pressure, const SimulationState& state);
+    void voidCellsNow(const std::string& name, const VoidCellSet& cells);
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

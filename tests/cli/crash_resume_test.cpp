@@ -1,0 +1,263 @@
+// The crash test (issue 12): a small experiment (two compaction stages, friction during shear,
+// two short shear tests) run to the end uninterrupted, then interrupted at many steps spread over
+// every stage by SIGKILL, SIGINT or SIGTERM (the GRAINLAB_TEST_STOP_AFTER_STEPS hook of
+// `grainlab run`), resumed with --resume, and required to give the same bits: every row of every
+// series in the CSVs and in the run file, the samples and the final state.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "grainlab/csv_series.h"
+#include "grainlab/run_file.h"
+#include "grainlab/simulation_state.h"
+
+namespace grainlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// Two compaction stages of 200 ovals from the grid, two shear tests with friction 0.5 to
+/// 0.3 %: about 116,000 steps (a few seconds).
+nlohmann::json crashExperiment() {
+    nlohmann::json j = nlohmann::json::parse(
+        readText(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json"));
+    j["name"] = "crash";
+    j["grains"]["count"] = 200;
+    j["compaction"]["pressures"] = {25e3, 50e3};
+    j["shear"]["pressures"] = {25e3, 50e3};
+    j["shear"]["target_axial_strain"] = 0.003;
+    j["record"]["strain_interval"] = 2e-4;
+    j["record"]["snapshot_strain_interval"] = 5e-4;
+    j["record"]["step_interval"] = 500;
+    j["record"]["snapshot_step_interval"] = 3000;
+    return j;
+}
+
+/// Runs grainlab with `arguments`; stops itself after `stopAfter` steps with `signal` (none if
+/// stopAfter is 0). Returns the wait status.
+int runGrainlab(const std::vector<std::string>& arguments, std::int64_t stopAfter = 0,
+                const char* signal = "KILL") {
+    const pid_t child = fork();
+    if (child == 0) {
+        if (stopAfter > 0) {
+            setenv("GRAINLAB_TEST_STOP_AFTER_STEPS", std::to_string(stopAfter).c_str(), 1);
+            setenv("GRAINLAB_TEST_STOP_SIGNAL", signal, 1);
+        }
+        std::freopen("/dev/null", "w", stdout);
+        std::freopen("/dev/null", "w", stderr);
+        std::vector<char*> argv{const_cast<char*>(GRAINLAB_EXE)};
+        for (const auto& a : arguments) {
+            argv.push_back(const_cast<char*>(a.c_str()));
+        }
+        argv.push_back(nullptr);
+        execv(GRAINLAB_EXE, argv.data());
+        _exit(127);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    return status;
+}
+
+bool sameBits(const std::vector<std::vector<double>>& a,
+              const std::vector<std::vector<double>>& b) {
+    if (a.size() != b.size()) {
+        return false;
+    }
+    for (std::size_t r = 0; r < a.size(); ++r) {
+        if (a[r].size() != b[r].size() ||
+            (!a[r].empty() && std::memcmp(a[r].data(), b[r].data(), a[r].size() * 8) != 0)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/// The series and states of a finished run folder, for comparison.
+struct RunRecord {
+    std::map<std::string, std::string> csv;
+    std::map<std::string, SeriesTable> series;
+    std::vector<double> samplePressures;
+    std::vector<SimulationState> samples;
+    SimulationState last;
+};
+
+RunRecord readRun(const fs::path& folder) {
+    RunRecord r;
+    const std::string file = (folder / "run.h5").string();
+    for (const std::string& test : listTests(file)) {
+        r.csv[test] = readText(folder / test / "series.csv");
+        r.series[test] = readSeries(file, test);
+    }
+    r.samplePressures = listSamples(file);
+    for (double p : r.samplePressures) {
+        r.samples.push_back(readState(file, sampleGroup(p)));
+    }
+    r.last = readState(file, checkpointGroup(listCheckpoints(file).back()));
+    return r;
+}
+
+/// What differs between two runs ("" if nothing).
+std::string differences(const RunRecord& a, const RunRecord& b) {
+    std::string out;
+    if (a.csv.size() != b.csv.size()) {
+        out += fmt::format(" {} tests against {};", a.csv.size(), b.csv.size());
+    }
+    for (const auto& [test, text] : a.csv) {
+        const auto it = b.csv.find(test);
+        if (it == b.csv.end()) {
+            out += " no " + test + ";";
+            continue;
+        }
+        if (it->second != text) {
+            out += " " + test + "/series.csv;";
+        }
+        const SeriesTable& sa = a.series.at(test);
+        const SeriesTable& sb = b.series.at(test);
+        if (!sameBits(sa.rows, sb.rows) || sa.stages != sb.stages) {
+            out += fmt::format(" run.h5 series {} ({} rows against {});", test, sb.rows.size(),
+                               sa.rows.size());
+        }
+    }
+    if (a.samplePressures != b.samplePressures) {
+        out += " sample list;";
+    } else {
+        for (std::size_t k = 0; k < a.samples.size(); ++k) {
+            if (!identicalDynamics(a.samples[k], b.samples[k])) {
+                out += fmt::format(" sample {} Pa;", a.samplePressures[k]);
+            }
+        }
+    }
+    if (!identicalDynamics(a.last, b.last)) {
+        out += fmt::format(" final state (step {} against {});", b.last.step, a.last.step);
+    }
+    return out;
+}
+
+TEST(CrashResume, EveryInterruptionResumesToTheSameBits) {
+    const fs::path base =
+        fs::temp_directory_path() / fmt::format("grainlab-test-crash-{}", getpid());
+    fs::remove_all(base);
+    fs::create_directories(base);
+    const fs::path experiment = base / "experiment.json";
+    std::ofstream(experiment) << crashExperiment().dump(2);
+
+    const fs::path whole = base / "whole";
+    const int wholeStatus = runGrainlab({"run", experiment.string(), "--out", whole.string()});
+    ASSERT_TRUE(WIFEXITED(wholeStatus) && WEXITSTATUS(wholeStatus) == 0);
+    const RunRecord reference = readRun(whole);
+
+    // Where the stages are, in steps of one uninterrupted process: the compaction runs from
+    // step 0; each test starts from its sample's step, after everything before it.
+    const auto stageSteps = [&](const std::string& test, const std::string& stage) {
+        const SeriesTable& t = reference.series.at(test);
+        const int step = t.column("step");
+        std::pair<std::int64_t, std::int64_t> range{-1, -1};
+        for (std::size_t r = 0; r < t.rows.size(); ++r) {
+            if (t.stages[r] == stage) {
+                const auto s = static_cast<std::int64_t>(t.rows[r][step]);
+                range.first = range.first < 0 ? s : range.first;
+                range.second = s;
+            }
+        }
+        EXPECT_GE(range.first, 0) << test << ": no stage " << stage;
+        return range;
+    };
+    const auto c25 = stageSteps("compaction", "compaction 25 kPa");
+    const auto c50 = stageSteps("compaction", "compaction 50 kPa");
+    const auto e25 = stageSteps("p025kPa", "equilibration 25 kPa");
+    const auto s25 = stageSteps("p025kPa", "shear 25 kPa");
+    const auto e50 = stageSteps("p050kPa", "equilibration 50 kPa");
+    const auto s50 = stageSteps("p050kPa", "shear 50 kPa");
+    const std::int64_t compactionEnd = c50.second;
+    const std::int64_t test1 = compactionEnd - c25.second;      // process - sim step
+    const std::int64_t test2 = test1 + s25.second - c50.second; // (test 2 from sample 2)
+    // Its kill points (+500, +1213) fall inside stage 2, before its first periodic checkpoint
+    // (3000 steps into the stage).
+    ASSERT_GT(c50.second - c25.second, 1300) << "stage 2 too short for the kill points";
+
+    struct Case {
+        std::string what;
+        std::int64_t step; ///< steps of the interrupted process
+        const char* signal;
+    };
+    const std::int64_t s25len = s25.second - s25.first, s50len = s50.second - s50.first;
+    const std::vector<Case> cases = {
+        {"compaction stage 1, before its first checkpoint", 1700, "KILL"},
+        {"compaction stage 1, just after a checkpoint", 6000, "KILL"},
+        {"compaction stage 1, mid-stage", c25.second / 2 + 777, "KILL"},
+        {"compaction stage 1, SIGTERM", c25.second / 3 + 41, "TERM"},
+        {"compaction stage 1, at its end", c25.second, "KILL"},
+        {"compaction stage 2, before its first checkpoint", c25.second + 500, "KILL"},
+        {"compaction stage 2, SIGINT", c25.second + 1213, "INT"},
+        {"compaction, at its end", compactionEnd, "KILL"},
+        {"equilibration 25 kPa, early", test1 + e25.first + 300, "KILL"},
+        {"equilibration 25 kPa, SIGINT", test1 + e25.first + 1111, "INT"},
+        {"shear 25 kPa, before its first checkpoint", test1 + s25.first + 250, "KILL"},
+        {"shear 25 kPa, SIGINT early", test1 + s25.first + 613, "INT"},
+        {"shear 25 kPa, SIGINT", test1 + s25.first + s25len / 3 + 7, "INT"},
+        {"shear 25 kPa, SIGINT mid", test1 + s25.first + s25len / 2 + 1, "INT"},
+        {"shear 25 kPa, SIGTERM late", test1 + s25.first + 2 * s25len / 3 + 3, "TERM"},
+        {"shear 25 kPa, late", test1 + s25.second - 1, "KILL"},
+        {"shear 25 kPa, at its end", test1 + s25.second, "KILL"},
+        {"equilibration 50 kPa", test2 + e50.first + 700, "KILL"},
+        {"shear 50 kPa, SIGINT mid", test2 + s50.first + s50len / 2 + 13, "INT"},
+        {"shear 50 kPa, mid", test2 + s50.first + s50len / 2 + 301, "KILL"},
+        {"shear 50 kPa, late SIGINT", test2 + s50.second - 2, "INT"},
+        {"the run, at its very end", test2 + s50.second, "KILL"},
+    };
+    std::string failed;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const Case& c = cases[k];
+        const fs::path out = base / fmt::format("case{:02d}", k);
+        const std::string label = fmt::format("{} ({} after {} steps)", c.what, c.signal, c.step);
+        const int first =
+            runGrainlab({"run", experiment.string(), "--out", out.string()}, c.step, c.signal);
+        if (std::string(c.signal) == "KILL") {
+            EXPECT_TRUE(WIFSIGNALED(first) && WTERMSIG(first) == SIGKILL) << label;
+        } else {
+            EXPECT_TRUE(WIFEXITED(first) && WEXITSTATUS(first) == 130) << label;
+        }
+        const int second = runGrainlab({"run", "--resume", out.string()});
+        if (!(WIFEXITED(second) && WEXITSTATUS(second) == 0)) {
+            ADD_FAILURE() << label << ": --resume failed (status " << second << ")";
+            failed += "\n  " + label + ": --resume failed";
+            continue;
+        }
+        const std::string diff = differences(reference, readRun(out));
+        if (!diff.empty()) {
+            ADD_FAILURE() << label << ": differs in" << diff;
+            failed += "\n  " + label + ":" + diff;
+        } else {
+            fs::remove_all(out);
+        }
+    }
+    if (!failed.empty()) {
+        std::fprintf(stderr, "crash cases that failed:%s\n", failed.c_str());
+    } else {
+        fs::remove_all(base);
+    }
+}
+
+} // namespace
+} // namespace grainlab

@@ -1,0 +1,329 @@
+// The run folder is owned by one run (issue 12): a finished run is not run again, a folder in
+// use is refused untouched, an existing run is not overwritten without --force, and --force
+// leaves none of the old run's files behind.
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "grainlab/run_file.h"
+
+namespace grainlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+fs::path freshFolder(const std::string& name) {
+    const fs::path p =
+        fs::temp_directory_path() / fmt::format("grainlab-test-folder-{}-{}", name, getpid());
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p;
+}
+
+/// 120 grains, one pressure, a short shear: a couple of seconds.
+fs::path writeTinyExperiment(const fs::path& folder, double targetStrain = 0.002) {
+    nlohmann::json j = nlohmann::json::parse(
+        readText(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json"));
+    j["name"] = "tiny";
+    j["grains"]["count"] = 120;
+    j["compaction"]["pressures"] = {50e3};
+    j["shear"]["pressures"] = {50e3};
+    j["shear"]["target_axial_strain"] = targetStrain;
+    j["record"]["snapshot_strain_interval"] = 1e-3;
+    j["record"]["snapshot_step_interval"] = 5000;
+    const fs::path p = folder / "experiment.json";
+    std::ofstream(p) << j.dump(2);
+    return p;
+}
+
+struct Result {
+    int status = -1;    ///< exit status, or -1
+    std::string output; ///< stdout and stderr
+};
+
+Result runGrainlab(const std::string& arguments) {
+    Result r;
+    FILE* pipe = popen(fmt::format("{} {} 2>&1", GRAINLAB_EXE, arguments).c_str(), "r");
+    if (!pipe) {
+        return r;
+    }
+    char buffer[512];
+    while (fgets(buffer, sizeof buffer, pipe)) {
+        r.output += buffer;
+    }
+    const int status = pclose(pipe);
+    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+/// Every file under `folder` with its bytes.
+std::map<std::string, std::string> folderBytes(const fs::path& folder) {
+    std::map<std::string, std::string> out;
+    for (const auto& e : fs::recursive_directory_iterator(folder)) {
+        if (e.is_regular_file()) {
+            out[fs::relative(e.path(), folder).string()] = readText(e.path());
+        }
+    }
+    return out;
+}
+
+TEST(RunFolder, ResumeOfAFinishedRunChangesNothing) {
+    const fs::path base = freshFolder("finished");
+    const fs::path experiment = writeTinyExperiment(base);
+    const fs::path out = base / "out";
+    ASSERT_EQ(runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()))
+                  .status,
+              0);
+    const auto before = folderBytes(out);
+    const auto checkpoints = listCheckpoints((out / "run.h5").string());
+    const Result r = runGrainlab(fmt::format("run --resume {} --quiet", out.string()));
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("is finished"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(out.string()), std::string::npos) << r.output;
+    EXPECT_EQ(folderBytes(out), before) << "a resume of a finished run changed its files";
+    EXPECT_EQ(listCheckpoints((out / "run.h5").string()), checkpoints);
+    fs::remove_all(base);
+}
+
+TEST(RunFolder, ASecondRunIntoALiveFolderIsRefusedAndTouchesNothing) {
+    const fs::path base = freshFolder("live");
+    const fs::path experiment = writeTinyExperiment(base, 0.1); // long enough to stay alive
+    const fs::path out = base / "out";
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        std::freopen("/dev/null", "w", stderr);
+        std::freopen("/dev/null", "w", stdout);
+        execl(GRAINLAB_EXE, GRAINLAB_EXE, "run", experiment.c_str(), "--out", out.c_str(),
+              "--quiet", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    // Wait until the first run is shearing (its test series exists).
+    const fs::path csv = out / "p050kPa" / "series.csv";
+    for (int k = 0; k < 1200 && !fs::exists(csv); ++k) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    ASSERT_TRUE(fs::exists(csv));
+    const auto size = fs::file_size(out / "run.h5");
+    for (const std::string arguments :
+         {fmt::format("run {} --out {} --quiet", experiment.string(), out.string()),
+          fmt::format("run {} --out {} --force --quiet", experiment.string(), out.string()),
+          fmt::format("run --resume {} --quiet", out.string())}) {
+        const Result r = runGrainlab(arguments);
+        EXPECT_EQ(r.status, 2) << arguments << "\n" << r.output;
+        EXPECT_NE(r.output.find("another run owns it"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(out.string()), std::string::npos) << r.output;
+        // The live run's file was not truncated.
+        EXPECT_GE(fs::file_size(out / "run.h5"), size) << arguments;
+    }
+    kill(child, SIGINT);
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130); // interrupted, not an error
+    // The first run's files are whole: it resumes (now that it is gone) from its checkpoint.
+    const auto checkpoints = listCheckpoints((out / "run.h5").string());
+    ASSERT_FALSE(checkpoints.empty());
+    EXPECT_NE(checkpoints.back().find("interrupted"), std::string::npos);
+    const Result again = runGrainlab(fmt::format("run --resume {} --quiet", out.string()));
+    EXPECT_EQ(again.status, 0) << again.output;
+    fs::remove_all(base);
+}
+
+TEST(RunFolder, OutOfAnExistingRunIsRefusedWithoutForce) {
+    const fs::path base = freshFolder("exists");
+    const fs::path experiment = writeTinyExperiment(base);
+    const fs::path out = base / "out";
+    // An interrupted, resumable run.
+    {
+        const std::string command = fmt::format(
+            "GRAINLAB_TEST_STOP_AFTER_STEPS=3000 GRAINLAB_TEST_STOP_SIGNAL=INT {} run {} --out {} "
+            "--quiet > /dev/null 2>&1",
+            GRAINLAB_EXE, experiment.string(), out.string());
+        const int status = std::system(command.c_str());
+        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130);
+    }
+    const auto before = folderBytes(out);
+    const Result r =
+        runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()));
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find(out.string()), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("grainlab run --resume " + out.string()), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("--force"), std::string::npos) << r.output;
+    EXPECT_EQ(folderBytes(out), before) << "a refused run changed the folder";
+    fs::remove_all(base);
+}
+
+TEST(RunFolder, ForceLeavesNoFileOfTheOldRun) {
+    const fs::path base = freshFolder("force");
+    const fs::path out = base / "out";
+    nlohmann::json j = nlohmann::json::parse(readText(writeTinyExperiment(base)));
+    j["compaction"]["pressures"] = {25e3, 50e3};
+    j["shear"]["pressures"] = {25e3, 50e3};
+    const fs::path two = base / "two.json";
+    std::ofstream(two) << j.dump(2);
+    ASSERT_EQ(
+        runGrainlab(fmt::format("run {} --out {} --quiet", two.string(), out.string())).status, 0);
+    ASSERT_TRUE(fs::exists(out / "p025kPa" / "series.csv"));
+    std::ofstream(out / "notes.txt") << "the user's own file";
+    const fs::path one = base / "experiment.json"; // 50 kPa only
+    const Result r =
+        runGrainlab(fmt::format("run {} --out {} --force --quiet", one.string(), out.string()));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_FALSE(fs::exists(out / "p025kPa")) << "the old run's series lingers";
+    EXPECT_TRUE(fs::exists(out / "p050kPa" / "series.csv"));
+    EXPECT_TRUE(fs::exists(out / "notes.txt")) << "--force removed a file that is not the run's";
+    const std::string file = (out / "run.h5").string();
+    EXPECT_EQ(listTests(file), (std::vector<std::string>{"compaction", "p050kPa"}));
+    EXPECT_EQ(listSamples(file), std::vector<double>{50e3});
+    EXPECT_EQ(readExperimentText(file), readText(one));
+    fs::remove_all(base);
+}
+
+TEST(RunFolder, ThreadsOutsideTheirRangeAreRefused) {
+    const fs::path base = freshFolder("threads");
+    const fs::path experiment = writeTinyExperiment(base);
+    for (const char* threads : {"-1", "0", "2147483647", "1.5"}) {
+        const Result r =
+            runGrainlab(fmt::format("run {} --out {} --threads {} --quiet", experiment.string(),
+                                    (base / "out").string(), threads));
+        EXPECT_NE(r.status, 0) << threads;
+        EXPECT_NE(r.output.find("--threads"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("1 to 1024"), std::string::npos) << r.output;
+        EXPECT_FALSE(fs::exists(base / "out")) << threads;
+    }
+    fs::remove_all(base);
+}
+
+TEST(RunFolder, ADamagedRunFileIsRefusedByNameOrResumesToTheSameResult) {
+    const fs::path base = freshFolder("damaged");
+    const fs::path experiment = writeTinyExperiment(base);
+    const fs::path whole = base / "whole";
+    ASSERT_EQ(
+        runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), whole.string()))
+            .status,
+        0);
+    const fs::path stopped = base / "stopped";
+    {
+        const std::string command = fmt::format(
+            "GRAINLAB_TEST_STOP_AFTER_STEPS=9000 GRAINLAB_TEST_STOP_SIGNAL=INT {} run {} --out {} "
+            "--quiet > /dev/null 2>&1",
+            GRAINLAB_EXE, experiment.string(), stopped.string());
+        const int status = std::system(command.c_str());
+        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130);
+    }
+    const std::string bytes = readText(stopped / "run.h5");
+    const auto expected = folderBytes(whole);
+    int refused = 0, resumed = 0;
+    for (int k = 0; k < 24; ++k) {
+        const std::size_t offset = 97 + (bytes.size() - 100) * k / 24;
+        const fs::path copy = base / fmt::format("copy{:02d}", k);
+        fs::copy(stopped, copy, fs::copy_options::recursive);
+        std::string damaged = bytes;
+        damaged[offset] = static_cast<char>(damaged[offset] ^ 0x5a);
+        std::ofstream(copy / "run.h5", std::ios::binary | std::ios::trunc) << damaged;
+        const Result r = runGrainlab(fmt::format("run --resume {} --quiet", copy.string()));
+        ASSERT_GE(r.status, 0) << "byte " << offset << ": crashed\n" << r.output;
+        if (r.status == 0) {
+            // Resumed: every series as in the uninterrupted run.
+            for (const auto& [name, text] : expected) {
+                if (name.ends_with("series.csv")) {
+                    EXPECT_EQ(readText(copy / name), text) << "byte " << offset << ": " << name;
+                }
+            }
+            ++resumed;
+        } else {
+            EXPECT_NE(r.output.find((copy / "run.h5").string()), std::string::npos)
+                << "byte " << offset << ": the error does not name the file\n"
+                << r.output;
+            ++refused;
+        }
+    }
+    EXPECT_GT(refused, 0);
+    std::printf("24 damaged run files: %d refused, %d resumed to the same series\n", refused,
+                resumed);
+    fs::remove_all(base);
+}
+
+TEST(RunFolder, AFullDiskStopsTheRunCleanlyAndItResumesExactly) {
+    const fs::path base = freshFolder("full");
+    const fs::path experiment = writeTinyExperiment(base, 0.004);
+    const fs::path whole = base / "whole";
+    ASSERT_EQ(
+        runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), whole.string()))
+            .status,
+        0);
+    const auto size = fs::file_size(whole / "run.h5");
+    // The disk fills at 60 % of the run file: with RLIMIT_FSIZE and SIGXFSZ ignored, a write past
+    // the limit fails with EFBIG, as on a full file system.
+    const fs::path out = base / "out";
+    int pipeFds[2];
+    ASSERT_EQ(::pipe(pipeFds), 0);
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        ::dup2(pipeFds[1], 1);
+        ::dup2(pipeFds[1], 2);
+        std::signal(SIGXFSZ, SIG_IGN);
+        struct rlimit limit {};
+        limit.rlim_cur = limit.rlim_max = size * 6 / 10;
+        ::setrlimit(RLIMIT_FSIZE, &limit);
+        execl(GRAINLAB_EXE, GRAINLAB_EXE, "run", experiment.c_str(), "--out", out.c_str(),
+              "--quiet", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    ::close(pipeFds[1]);
+    std::string output;
+    char buffer[512];
+    for (ssize_t n; (n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0;) {
+        output.append(buffer, std::size_t(n));
+    }
+    ::close(pipeFds[0]);
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status) << "\n" << output;
+    EXPECT_EQ(WEXITSTATUS(status), 1) << output;
+    EXPECT_NE(output.find((out / "run.h5").string()), std::string::npos) << output;
+    EXPECT_NE(output.find("no room"), std::string::npos) << output;
+    EXPECT_NE(output.find("grainlab run --resume " + out.string()), std::string::npos) << output;
+    // Space freed: the run resumes from its last complete checkpoint to the same bits.
+    ASSERT_FALSE(listCheckpoints((out / "run.h5").string()).empty());
+    const Result r = runGrainlab(fmt::format("run --resume {} --quiet", out.string()));
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (const auto& [name, text] : folderBytes(whole)) {
+        if (name.ends_with("series.csv")) {
+            EXPECT_EQ(readText(out / name), text) << name;
+        }
+    }
+    for (const std::string& test : listTests((whole / "run.h5").string())) {
+        EXPECT_EQ(readSeries((whole / "run.h5").string(), test).rows,
+                  readSeries((out / "run.h5").string(), test).rows)
+            << test;
+    }
+    fs::remove_all(base);
+}
+
+} // namespace
+} // namespace grainlab
