@@ -30,8 +30,10 @@ namespace fs = std::filesystem;
 
 const std::string kStudy = GRAINLAB_SOURCE_DIR "/resources/studies/tiny.json";
 
+/// A new folder of this test process (ctest runs the tests of this file side by side).
 fs::path freshFolder(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("grainlab-study-" + name);
+    const fs::path dir = fs::temp_directory_path() /
+                         ("grainlab-study-" + name + "-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     return dir;
 }
