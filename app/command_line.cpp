@@ -14,6 +14,7 @@
 #ifdef GRAINLAB_WITH_GUI
 #include "bench/window_bench.h"
 #include "gui/app.h"
+#include "study/study_figures_writer.h"
 #endif
 
 namespace grainlab {
@@ -33,8 +34,8 @@ int runCommandLine(int argc, char** argv) {
     app.set_version_flag("--version", std::string(GRAINLAB_VERSION));
 
     BenchOptions bench;
-    auto* benchCommand =
-        app.add_subcommand("bench", "time the engine on a dense assembly under biaxial compression");
+    auto* benchCommand = app.add_subcommand(
+        "bench", "time the engine on a dense assembly under biaxial compression");
     addBenchOptions(*benchCommand, bench);
 
     RunOptions run;
@@ -58,11 +59,13 @@ int runCommandLine(int argc, char** argv) {
                  "cost and recommend the cheapest valid setting");
     studyCommand->add_option("study", study.studyFile, "study file (.json)");
     studyCommand->add_option("--out", study.out, "study folder (runs, study.csv, summary.csv)");
-    studyCommand->add_option("--jobs", study.jobs, "runs at once (default: as the processors allow)")
+    studyCommand
+        ->add_option("--jobs", study.jobs, "runs at once (default: as the processors allow)")
         ->check(CLI::Range(1, 1024));
-    studyCommand->add_option("--emit", study.emit,
-                             "write the runs as a Slurm job array (slurm) or a GNU parallel job "
-                             "list (parallel) instead of running them")
+    studyCommand
+        ->add_option("--emit", study.emit,
+                     "write the runs as a Slurm job array (slurm) or a GNU parallel job "
+                     "list (parallel) instead of running them")
         ->check(CLI::IsMember({"slurm", "parallel"}));
     studyCommand->add_flag("--quiet", study.quiet, "no progress bar");
     std::string collectFolder;
@@ -87,8 +90,11 @@ int runCommandLine(int argc, char** argv) {
             return runBench(bench, nullptr);
 #endif
         }
+#ifdef GRAINLAB_WITH_GUI
+        study.figures = writeStudyFiguresHeadless;
+#endif
         if (*collectCommand) {
-            return collectStudyCommand(collectFolder, study.quiet);
+            return collectStudyCommand(collectFolder, study.quiet, study.figures);
         }
         if (*studyCommand) {
             if (study.studyFile.empty() || study.out.empty()) {

@@ -82,8 +82,8 @@ void prepareFolder(const fs::path& dir, const StudySpec& spec, const StudyPlan& 
 
 /// Summarises the finished runs into study.csv, summary.csv and recommended.json; prints the
 /// recommendation. Returns how many runs had results.
-std::size_t summarise(const fs::path& dir, const StudySpec& spec, const StudyPlan& plan,
-                      bool quiet) {
+std::size_t summarise(const fs::path& dir, const StudySpec& spec, const StudyPlan& plan, bool quiet,
+                      const StudyFigureWriter& figures) {
     std::vector<RunResult> results;
     for (std::size_t i = 0; i < plan.runs.size(); ++i) {
         if (auto r = readRunResult((dir / "runs" / plan.runs[i].id).string(), int(i))) {
@@ -93,6 +93,12 @@ std::size_t summarise(const fs::path& dir, const StudySpec& spec, const StudyPla
     const StudySummary summary = summariseStudy(spec, plan, results, spec.costMeasure);
     writeStudyCsv((dir / "study.csv").string(), spec, plan, results, summary);
     writeSummaryCsv((dir / "summary.csv").string(), spec, plan, summary);
+    if (figures) {
+        const std::string error = figures(dir.string(), spec, plan, results, summary);
+        if (!error.empty()) {
+            throw std::runtime_error("writing the study's figures: " + error);
+        }
+    }
     if (summary.recommended) {
         const int best = *summary.recommended;
         writeFileAtomically((dir / "recommended.json").string(),
@@ -198,7 +204,7 @@ int runStudyCommand(const StudyOptions& options) {
     std::signal(SIGINT, previous);
     std::signal(SIGTERM, previousTerm);
 
-    summarise(dir, spec, plan, options.quiet);
+    summarise(dir, spec, plan, options.quiet, options.figures);
     if (stopRequested.load()) {
         fmt::print(stderr,
                    "grainlab study: interrupted; the runs wrote checkpoints. Continue with the "
@@ -216,7 +222,7 @@ int runStudyCommand(const StudyOptions& options) {
     return 0;
 }
 
-int collectStudyCommand(const std::string& folder, bool quiet) {
+int collectStudyCommand(const std::string& folder, bool quiet, const StudyFigureWriter& figures) {
     const fs::path dir = fs::absolute(folder).lexically_normal();
     const fs::path studyJson = dir / "study.json";
     if (!fs::exists(studyJson)) {
@@ -225,7 +231,7 @@ int collectStudyCommand(const std::string& folder, bool quiet) {
     }
     const StudySpec spec = readStudyFile(studyJson.string());
     const StudyPlan plan = planStudy(spec);
-    const std::size_t done = summarise(dir, spec, plan, quiet);
+    const std::size_t done = summarise(dir, spec, plan, quiet, figures);
     if (!quiet) {
         fmt::print("grainlab study collect: {} of {} runs finished; results in {}\n", done,
                    plan.runs.size(), dir.string());

@@ -32,8 +32,8 @@ const std::string kStudy = GRAINLAB_SOURCE_DIR "/resources/studies/tiny.json";
 
 /// A new folder of this test process (ctest runs the tests of this file side by side).
 fs::path freshFolder(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() /
-                         ("grainlab-study-" + name + "-" + std::to_string(::getpid()));
+    const fs::path dir =
+        fs::temp_directory_path() / ("grainlab-study-" + name + "-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     return dir;
 }
@@ -125,6 +125,15 @@ TEST(StudyCommand, TinyStudyWritesEveryFileAndTheNumbersAddUp) {
     for (const char* f : {"study.json", "study.csv", "summary.csv", "recommended.json"}) {
         EXPECT_TRUE(fs::exists(dir / f)) << f;
     }
+#ifdef GRAINLAB_WITH_GUI
+    for (const char* f :
+         {"error-cost_peak_q_over_p_p015kPa", "error-cost_rms_epsv_p100kPa",
+          "curves_q_over_p_p015kPa", "peak_q_over_p_vs_time_step_fraction_p100kPa"}) {
+        for (const char* format : {".png", ".svg", ".pdf"}) {
+            EXPECT_GT(fs::file_size(dir / "figures" / (std::string(f) + format)), 1000u) << f;
+        }
+    }
+#endif
     const std::vector<std::string> runs{"ref-seed1",
                                         "ref-seed2",
                                         "time_step_fraction-0.5-seed1",

@@ -1,0 +1,85 @@
+// The study's figures look at what was drawn: one point per setting with a result, where
+// toPixel() puts it and in the colour of its verdict, the reference's noise band behind them,
+// and a hit test that finds each point.
+#include <QImage>
+#include <QPainter>
+
+#include <gtest/gtest.h>
+
+#include "grainlab/ui/study_figures.h"
+
+namespace grainlab::ui {
+namespace {
+
+StudySummary summaryOfThree() {
+    StudySummary s;
+    s.tests = {"p015kPa"};
+    const double errors[] = {0.0, 0.004, 0.05};
+    const double costs[] = {10, 4, 1};
+    for (int k = 0; k < 3; ++k) {
+        SettingSummary set;
+        set.setting = k;
+        set.runsDone = 2;
+        set.cost = {costs[k], 0.5, 2};
+        MetricSummary m;
+        m.test = "p015kPa";
+        m.metric = "peak_q_over_p";
+        m.scatter = {0.5 + errors[k], 0.002, 2};
+        m.error = errors[k];
+        m.noise = 0.006;
+        m.withinNoise = errors[k] <= 0.006;
+        m.withinTolerance = errors[k] <= 0.01;
+        set.metrics.push_back(m);
+        set.valid = *m.withinTolerance;
+        s.settings.push_back(set);
+    }
+    s.recommended = 1;
+    return s;
+}
+
+StudyPlan planOfThree() {
+    StudyPlan p;
+    p.settings = {{"ref", {}, true}, {"a", {}, false}, {"b", {}, false}};
+    return p;
+}
+
+TEST(StudyFigures, ErrorAgainstCostDrawsOnePointPerSettingOverTheNoiseBand) {
+    StudySpec spec;
+    spec.tolerances["peak_q_over_p"] = {0.01, false};
+    const PlotPainter plot =
+        errorCostPlot(spec, planOfThree(), summaryOfThree(), "p015kPa", "peak_q_over_p");
+    ASSERT_EQ(plot.points.size(), 3u);
+    EXPECT_TRUE(plot.xAxis.logarithmic);
+    EXPECT_TRUE(plot.yAxis.logarithmic);
+    EXPECT_TRUE(plot.points[1].highlighted);
+
+    const QSize size(800, 600);
+    QImage image(size, QImage::Format_ARGB32);
+    {
+        QPainter painter(&image);
+        plot.paint(painter, QRectF(QPointF(0, 0), size));
+    }
+    const QRectF rect(QPointF(0, 0), size);
+    for (std::size_t k = 0; k < plot.points.size(); ++k) {
+        const PlotPoint& p = plot.points[k];
+        const QPoint at = plot.toPixel(p.x, p.y, rect).toPoint();
+        const QColor c = image.pixelColor(at);
+        EXPECT_LT(std::abs(c.red() - p.colour.red()) + std::abs(c.green() - p.colour.green()) +
+                      std::abs(c.blue() - p.colour.blue()),
+                  30)
+            << k << " " << c.name().toStdString();
+        EXPECT_EQ(plot.pointAt(QPointF(at) + QPointF(2, 1), rect), int(k));
+    }
+    // Within tolerance green, outside red, the reference dark.
+    EXPECT_GT(plot.points[1].colour.green(), plot.points[1].colour.red());
+    EXPECT_GT(plot.points[2].colour.red(), plot.points[2].colour.green());
+    // The noise band: grey behind the plot below the noise level, white above it.
+    const double x = plot.points[0].x;
+    const QColor inBand = image.pixelColor(plot.toPixel(x * 0.8, 0.003, rect).toPoint());
+    const QColor above = image.pixelColor(plot.toPixel(x * 0.8, 0.02, rect).toPoint());
+    EXPECT_LT(inBand.red(), 245) << inBand.name().toStdString();
+    EXPECT_EQ(above, QColor(Qt::white)) << above.name().toStdString();
+}
+
+} // namespace
+} // namespace grainlab::ui

@@ -1,0 +1,257 @@
+// See study_figures.h.
+#include "grainlab/ui/study_figures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <QDir>
+#include <QPainter>
+
+#include "grainlab/shear_metrics.h"
+#include "grainlab/ui/colour_maps.h"
+#include "grainlab/ui/figure_export.h"
+
+namespace grainlab::ui {
+namespace {
+
+const MetricSummary* find(const SettingSummary& s, const std::string& test,
+                          const std::string& metric) {
+    for (const MetricSummary& m : s.metrics) {
+        if (m.test == test && m.metric == metric) {
+            return &m;
+        }
+    }
+    return nullptr;
+}
+
+QString q(const std::string& s) {
+    return QString::fromStdString(s);
+}
+
+QString costTitle(const std::string& measure) {
+    if (measure == "wall_seconds") {
+        return QObject::tr("cost: wall time per run [s]");
+    }
+    if (measure == "grain_steps") {
+        return QObject::tr("cost: grain-steps per run");
+    }
+    return QObject::tr("cost: processor time per run [s]");
+}
+
+} // namespace
+
+PlotPainter errorCostPlot(const StudySpec& spec, const StudyPlan& plan, const StudySummary& summary,
+                          const std::string& test, const std::string& metric) {
+    PlotPainter plot;
+    plot.title = QObject::tr("%1 at %2: error against cost").arg(q(metric), q(test));
+    plot.xAxis = {costTitle(spec.costMeasure), true, {}, {}};
+    plot.yAxis = {QObject::tr("|error| against the reference mean"), true, {}, {}};
+    // Errors of exactly 0 (the reference, a cost-only knob) sit on the floor of the axis.
+    double smallest = std::numeric_limits<double>::infinity();
+    std::optional<double> noise;
+    for (const SettingSummary& s : summary.settings) {
+        if (const MetricSummary* m = find(s, test, metric)) {
+            if (m->error && std::abs(*m->error) > 0) {
+                smallest = std::min(smallest, std::abs(*m->error));
+            }
+            if (m->noise && *m->noise > 0) {
+                smallest = std::min(smallest, *m->noise);
+                noise = m->noise;
+            }
+        }
+    }
+    const double floor = std::isfinite(smallest) ? smallest / 10 : 1e-6;
+    plot.yAxis.min = floor / 2;
+    if (noise) {
+        plot.bands.push_back({floor / 2, *noise, QObject::tr("reference noise (2σ of its seeds)"),
+                              QColor(150, 150, 150, 90)});
+    }
+    const auto tol = spec.tolerances.find(metric);
+    for (const SettingSummary& s : summary.settings) {
+        const MetricSummary* m = find(s, test, metric);
+        if (!m || !m->error || s.cost.count == 0) {
+            continue;
+        }
+        PlotPoint p;
+        p.x = s.cost.mean;
+        p.xError = s.cost.sd;
+        p.y = std::max(std::abs(*m->error), floor);
+        p.yError = m->scatter.sd;
+        const StudySetting& setting = plan.settings[std::size_t(s.setting)];
+        p.label = q(setting.id);
+        p.colour = setting.isReference                  ? QColor(60, 60, 60)
+                   : m->withinTolerance.value_or(false) ? QColor(44, 160, 44)
+                                                        : QColor(214, 39, 40);
+        p.highlighted = summary.recommended == s.setting;
+        plot.points.push_back(p);
+    }
+    if (tol != spec.tolerances.end() && !tol->second.relative) {
+        plot.bands.push_back({tol->second.value * 0.995, tol->second.value * 1.005,
+                              QObject::tr("tolerance"), QColor(44, 160, 44, 160)});
+    }
+    return plot;
+}
+
+PlotPainter metricKnobPlot(const StudySpec& spec, const StudyPlan& plan,
+                           const StudySummary& summary, KnobKind knob, const std::string& test,
+                           const std::string& metric) {
+    PlotPainter plot;
+    plot.title = QObject::tr("%1 at %2 against %3").arg(q(metric), q(test), q(knobName(knob)));
+    plot.xAxis.title = q(knobName(knob));
+    plot.yAxis.title = q(metric);
+    const StudySetting& ref = plan.settings.front();
+    // The settings that differ from the reference in this knob only (and the reference).
+    std::vector<const Knob*> knobs;
+    const Knob* turned = nullptr;
+    for (const Knob& k : spec.knobs) {
+        if (k.kind == knob) {
+            turned = &k;
+        }
+    }
+    if (!turned) {
+        return plot;
+    }
+    const bool numeric = turned->levels.front().object.empty();
+    for (const SettingSummary& s : summary.settings) {
+        const StudySetting& setting = plan.settings[std::size_t(s.setting)];
+        bool onlyThisKnob = true;
+        for (const auto& [kind, level] : setting.levels) {
+            const auto r = ref.levels.find(kind);
+            if (kind != knob && (r == ref.levels.end() || !(r->second == level))) {
+                onlyThisKnob = false;
+            }
+        }
+        for (const auto& [kind, level] : ref.levels) {
+            if (kind != knob && !setting.levels.count(kind)) {
+                onlyThisKnob = false;
+            }
+        }
+        const MetricSummary* m = find(s, test, metric);
+        if (!onlyThisKnob || !m || m->scatter.count == 0) {
+            continue;
+        }
+        const auto level = setting.levels.find(knob);
+        PlotPoint p;
+        if (level == setting.levels.end()) {
+            p.label = QObject::tr("base");
+            p.x = numeric ? 0 : -1;
+        } else if (numeric) {
+            p.x = level->second.number;
+            p.label = q(level->second.label());
+        } else {
+            const auto it = std::find(turned->levels.begin(), turned->levels.end(), level->second);
+            p.x = double(it - turned->levels.begin());
+            p.label = q(level->second.label());
+        }
+        p.y = m->scatter.mean;
+        p.yError = m->scatter.sd;
+        p.colour = setting.isReference ? QColor(60, 60, 60) : QColor(31, 119, 180);
+        p.highlighted = setting.isReference;
+        plot.points.push_back(p);
+        if (setting.isReference && m->noise) {
+            plot.bands.push_back({m->scatter.mean - *m->noise, m->scatter.mean + *m->noise,
+                                  QObject::tr("reference ± noise"), QColor(150, 150, 150, 90)});
+        }
+    }
+    if (!numeric) {
+        plot.xAxis.title += QObject::tr(" (levels in file order)");
+    }
+    return plot;
+}
+
+PlotPainter curvesPlot(const StudyPlan& plan, const std::vector<RunResult>& results,
+                       const std::string& test, const std::string& column) {
+    PlotPainter plot;
+    plot.title = QObject::tr("%1 against ε1 at %2").arg(q(column), q(test));
+    plot.xAxis.title = QObject::tr("ε1 [-]");
+    plot.yAxis.title = q(column) + " [-]";
+    std::vector<std::vector<Curve>> bySetting(plan.settings.size());
+    double reach = std::numeric_limits<double>::infinity();
+    for (const RunResult& r : results) {
+        for (const SeriesTable& t : r.tests) {
+            if (t.test == test) {
+                Curve c = shearCurve(t, column);
+                if (!c.x.empty()) {
+                    reach = std::min(reach, c.x.back());
+                    bySetting[std::size_t(plan.runs[std::size_t(r.run)].setting)].push_back(
+                        std::move(c));
+                }
+            }
+        }
+    }
+    if (!std::isfinite(reach) || reach <= 0) {
+        return plot;
+    }
+    const std::vector<double> grid = evenlySpaced(0, reach, 201);
+    for (std::size_t s = 0; s < bySetting.size(); ++s) {
+        if (bySetting[s].empty()) {
+            continue;
+        }
+        const CurveBand band = meanCurve(bySetting[s], grid);
+        PlotCurve c;
+        c.x = band.x;
+        c.y = band.mean;
+        c.label = q(plan.settings[s].id);
+        if (plan.settings[s].isReference) {
+            c.band = band.sd;
+            c.colour = QColor(60, 60, 60);
+            c.width = 2.5;
+            c.label += QObject::tr(" (± 1σ)");
+        } else {
+            c.colour = categoryColour(int(s));
+        }
+        plot.curves.push_back(std::move(c));
+    }
+    return plot;
+}
+
+QStringList writeStudyFigures(const QString& folder, const StudySpec& spec, const StudyPlan& plan,
+                              const std::vector<RunResult>& results, const StudySummary& summary,
+                              QString* error, const QStringList& formats, QSize size) {
+    QStringList written;
+    if (!QDir().mkpath(folder)) {
+        if (error) {
+            *error = QObject::tr("%1: cannot create the folder").arg(folder);
+        }
+        return written;
+    }
+    const auto save = [&](const PlotPainter& plot, const QString& name) {
+        for (const QString& format : formats) {
+            const QString path = QDir(folder).filePath(name + "." + format);
+            if (!exportFigure(
+                    path, size,
+                    [&](QPainter& p, QSize s) { plot.paint(p, QRectF(QPointF(0, 0), s)); },
+                    error)) {
+                return false;
+            }
+            written << path;
+        }
+        return true;
+    };
+    for (const std::string& test : summary.tests) {
+        for (const std::string& metric : spec.deciding) {
+            if (!save(errorCostPlot(spec, plan, summary, test, metric),
+                      q("error-cost_" + metric + "_" + test))) {
+                return written;
+            }
+        }
+        for (const Knob& knob : spec.knobs) {
+            for (const NamedMetric& m : namedMetrics(ShearMetrics{})) {
+                if (!save(metricKnobPlot(spec, plan, summary, knob.kind, test, m.name),
+                          q(m.name + "_vs_" + knobName(knob.kind) + "_" + test))) {
+                    return written;
+                }
+            }
+        }
+        for (const char* column : {"q_over_p", "epsv"}) {
+            if (!save(curvesPlot(plan, results, test, column),
+                      q(std::string("curves_") + column + "_" + test))) {
+                return written;
+            }
+        }
+    }
+    return written;
+}
+
+} // namespace grainlab::ui
