@@ -177,6 +177,13 @@ std::string applySetting(const std::string& baseText, const std::string& baseSou
         if (fraction != levels.end()) {
             dt = fraction->second.number * criticalTimeStep(shapesOf(c), c.parameters).limit;
             j["time_step"] = dt;
+            if (!levels.count(KnobKind::AxialStrainPerStep) && inertial == levels.end()) {
+                // The loading rate is physics, the time step numerics: keep the strain rate
+                // (per second) of the base, so the strain per step scales with the step.
+                const double baseStep = OrderedJson::parse(baseText).at("time_step").get<double>();
+                child(j, "shear")["axial_strain_per_step"] =
+                    c.shear.axialStrainPerStep * dt / baseStep;
+            }
         }
         if (inertial != levels.end()) {
             // At the lowest confining pressure sheared, where the inertial number is largest.

@@ -10,8 +10,8 @@
 
 #include "grainlab/experiment_file.h"
 #include "grainlab/oval_shape.h"
-#include "grainlab/time_step.h"
 #include "grainlab/study_plan.h"
+#include "grainlab/time_step.h"
 
 namespace grainlab {
 namespace {
@@ -68,6 +68,9 @@ TEST(StudyPlan, OneAtATimeIsTheReferenceAndEachLevelOfEachKnob) {
     const double limit = criticalTimeStep(shapes, base.parameters).limit;
     const ExperimentConfig half = parseExperimentText(plan.runs[2].experimentText, "half");
     EXPECT_DOUBLE_EQ(half.parameters.timeStep, 0.5 * limit);
+    // The loading rate per second is the base's: the strain per step scales with the step.
+    EXPECT_DOUBLE_EQ(half.shear.axialStrainPerStep / half.parameters.timeStep,
+                     base.shear.axialStrainPerStep / base.parameters.timeStep);
     EXPECT_EQ(half.parameters.damping.kind, base.parameters.damping.kind);
     const ExperimentConfig undamped = parseExperimentText(plan.runs[7].experimentText, "none");
     EXPECT_EQ(undamped.parameters.damping.kind, DampingKind::None);
