@@ -8,6 +8,7 @@
 
 #include "cli/atomic_file.h"
 #include "cli/run_cost.h"
+#include "grainlab/csv_series.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/run_file.h"
 
@@ -20,28 +21,6 @@ namespace {
 /// A number with round-trip precision; an empty cell for a missing value (never NaN).
 std::string cell(const std::optional<double>& v) {
     return v && std::isfinite(*v) ? fmt::format("{:.17g}", *v) : std::string();
-}
-
-std::string csvText(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) {
-        return s;
-    }
-    std::string out = "\"";
-    for (char c : s) {
-        out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    }
-    return out + "\"";
-}
-
-std::string joinRow(const std::vector<std::string>& cells) {
-    std::string line;
-    for (std::size_t k = 0; k < cells.size(); ++k) {
-        if (k > 0) {
-            line += ',';
-        }
-        line += csvText(cells[k]);
-    }
-    return line + "\n";
 }
 
 /// The knobs of the study, in file order, as CSV header cells and as one setting's cells.
@@ -116,7 +95,7 @@ void writeStudyCsv(const std::string& path, const StudySpec& spec, const StudyPl
          {"wall_seconds [s]", "cpu_seconds [s]", "steps [-]", "grain_steps [-]", "threads [-]"}) {
         header.push_back(c);
     }
-    std::string text = joinRow(header);
+    std::string text = csvLine(header);
     for (std::size_t i = 0; i < results.size(); ++i) {
         const RunResult& r = results[i];
         const StudyRun& run = plan.runs.at(std::size_t(r.run));
@@ -135,7 +114,7 @@ void writeStudyCsv(const std::string& path, const StudySpec& spec, const StudyPl
         row.push_back(fmt::format("{}", r.cost.steps));
         row.push_back(fmt::format("{}", r.cost.grainSteps));
         row.push_back(fmt::format("{}", r.cost.threads));
-        text += joinRow(row);
+        text += csvLine(row);
     }
     writeFileAtomically(path, text);
 }
@@ -150,7 +129,7 @@ void writeSummaryCsv(const std::string& path, const StudySpec& spec, const Study
                           "tolerance", "within_tolerance", "deciding"}) {
         header.push_back(c);
     }
-    std::string text = joinRow(header);
+    std::string text = csvLine(header);
     for (const SettingSummary& s : summary.settings) {
         const StudySetting& setting = plan.settings.at(std::size_t(s.setting));
         std::vector<std::string> front{setting.id, yesNo(setting.isReference),
@@ -162,7 +141,7 @@ void writeSummaryCsv(const std::string& path, const StudySpec& spec, const Study
         const auto addRow = [&](const std::vector<std::string>& rest) {
             std::vector<std::string> row = front;
             row.insert(row.end(), rest.begin(), rest.end());
-            text += joinRow(row);
+            text += csvLine(row);
         };
         for (const MetricSummary& m : s.metrics) {
             const auto tol = spec.tolerances.find(m.metric);

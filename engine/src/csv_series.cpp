@@ -9,16 +9,6 @@
 
 namespace grainlab {
 
-namespace {
-
-/// Index of the `stage` cell in a row of the file.
-std::size_t stagePosition(const SeriesTable& table) {
-    const bool stepTimeFirst = table.columns.size() >= 2 && table.columns[0].name == "step" &&
-                               table.columns[1].name == "time";
-    return stepTimeFirst ? 2 : 0;
-}
-
-/// RFC 4180 quoting, only where needed.
 std::string csvCell(const std::string& text) {
     if (text.find_first_of(",\"\r\n") == std::string::npos) {
         return text;
@@ -31,6 +21,26 @@ std::string csvCell(const std::string& text) {
         }
     }
     return out + "\"";
+}
+
+std::string csvLine(const std::vector<std::string>& cells) {
+    std::string text;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        if (i > 0) {
+            text += ',';
+        }
+        text += csvCell(cells[i]);
+    }
+    return text + '\n';
+}
+
+namespace {
+
+/// Index of the `stage` cell in a row of the file.
+std::size_t stagePosition(const SeriesTable& table) {
+    const bool stepTimeFirst = table.columns.size() >= 2 && table.columns[0].name == "step" &&
+                               table.columns[1].name == "time";
+    return stepTimeFirst ? 2 : 0;
 }
 
 std::vector<std::string> splitCsvLine(const std::string& line) {
@@ -107,14 +117,7 @@ std::string formatRows(const SeriesTable& table, std::size_t from) {
 }
 
 std::string formatHeader(const std::vector<std::string>& header) {
-    std::string text;
-    for (std::size_t i = 0; i < header.size(); ++i) {
-        if (i > 0) {
-            text += ',';
-        }
-        text += csvCell(header[i]);
-    }
-    return text + '\n';
+    return csvLine(header);
 }
 
 void writeOrThrow(std::ofstream& out, const std::string& text, const std::string& path) {

@@ -10,25 +10,21 @@
 
 #include <gtest/gtest.h>
 
+#include "test_folders.h"
+
 #include "study/process_pool.h"
 
 namespace grainlab {
 namespace {
 
 namespace fs = std::filesystem;
+using test::text;
 
+/// A fresh folder (created: the pool writes logs into it).
 fs::path freshFolder(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("grainlab-pool-" + name);
-    fs::remove_all(dir);
+    const fs::path dir = test::freshFolder(name);
     fs::create_directories(dir);
     return dir;
-}
-
-std::string text(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
 }
 
 PoolJob shell(const fs::path& log, const std::string& script) {

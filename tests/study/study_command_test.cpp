@@ -21,29 +21,18 @@
 
 #include <gtest/gtest.h>
 
+#include "test_folders.h"
+
 #include "grainlab/statistics.h"
 
 namespace grainlab {
 namespace {
 
 namespace fs = std::filesystem;
+using test::freshFolder;
+using test::text;
 
 const std::string kStudy = GRAINLAB_SOURCE_DIR "/resources/studies/tiny.json";
-
-/// A new folder of this test process (ctest runs the tests of this file side by side).
-fs::path freshFolder(const std::string& name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("grainlab-study-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    return dir;
-}
-
-std::string text(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 int run(const std::string& command) {
     const int status = std::system(command.c_str());

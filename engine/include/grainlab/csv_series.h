@@ -15,6 +15,11 @@
 
 namespace grainlab {
 
+/// `text` as one CSV cell: RFC 4180 quoting, only where needed.
+std::string csvCell(const std::string& text);
+/// The cells as one CSV line (each quoted where needed), newline included.
+std::string csvLine(const std::vector<std::string>& cells);
+
 /// The header cells in file order, e.g. {"step [-]", "time [s]", "stage", "eps1 [-]", ...}.
 /// `stage` sits at index 2 when the columns start with step, time; first otherwise.
 std::vector<std::string> csvHeader(const SeriesTable& table);
