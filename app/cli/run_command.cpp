@@ -23,7 +23,9 @@ namespace fs = std::filesystem;
 
 std::atomic<bool> interrupted{false};
 
-extern "C" void onInterrupt(int) { interrupted.store(true); }
+extern "C" void onInterrupt(int) {
+    interrupted.store(true);
+}
 
 /// The test hook (see run_command.h): after this many steps of this process, raise the signal.
 struct TestStop {
@@ -102,7 +104,13 @@ int runExperimentCommand(const RunOptions& options) {
         config = parseExperimentText(readExperimentText(runFile), runFile + ":/experiment");
         point = RunOutputFolder::readResumePoint(folder);
         if (ExperimentRunner::finishedAt(point.runnerState)) {
-            // Nothing to run: the files stay exactly as they are.
+            // Nothing to run: the files stay exactly as they are, but for a cost record that
+            // missed the end (the process was killed between its last checkpoint and it).
+            RunCostRecord cost = readRunCost(folder);
+            if (!cost.finished) {
+                cost.finished = true;
+                writeRunCost(folder, cost);
+            }
             fmt::print("grainlab run: the run in {} is finished; nothing to resume (outputs in "
                        "{})\n",
                        folder, folder);

@@ -1,0 +1,113 @@
+// cost.json, what a run folder's run has cost: written by every `grainlab run` process, summed
+// over the processes of a resumed run, and marked finished only when the run is.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "cli/run_cost.h"
+
+namespace grainlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+fs::path freshFolder(const std::string& name) {
+    const fs::path p =
+        fs::temp_directory_path() / fmt::format("grainlab-test-cost-{}-{}", name, getpid());
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p;
+}
+
+/// 120 grains, one pressure, a short shear.
+fs::path tinyExperiment(const fs::path& folder) {
+    nlohmann::json j = nlohmann::json::parse(
+        readText(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json"));
+    j["grains"]["count"] = 120;
+    j["compaction"]["pressures"] = {50e3};
+    j["shear"]["target_axial_strain"] = 0.002;
+    const fs::path p = folder / "experiment.json";
+    std::ofstream(p) << j.dump(2);
+    return p;
+}
+
+int grainlab(const std::string& arguments, const std::string& environment = "") {
+    return std::system(
+        fmt::format("{} {} run {} > /dev/null 2>&1", environment, GRAINLAB_EXE, arguments).c_str());
+}
+
+TEST(RunCost, SummedOverTheProcessesOfAResumedRunAndFinishedOnlyAtTheEnd) {
+    const fs::path base = freshFolder("resumed");
+    const fs::path experiment = tinyExperiment(base);
+    ASSERT_EQ(grainlab(fmt::format("{} --out {} --quiet", experiment.string(),
+                                   (base / "whole").string())),
+              0);
+    const RunCostRecord whole = readRunCost((base / "whole").string());
+    EXPECT_TRUE(whole.finished);
+    EXPECT_EQ(whole.processes, 1);
+    EXPECT_GT(whole.steps, 1000);
+    EXPECT_EQ(whole.grainSteps, whole.steps * 120);
+    EXPECT_GT(whole.cpuSeconds, 0);
+    EXPECT_GE(whole.wallSeconds, 0.5 * whole.cpuSeconds);
+    EXPECT_EQ(whole.threads, 1);
+
+    // Interrupted (Ctrl-C) after 3000 steps, then resumed.
+    const std::string parts = (base / "parts").string();
+    grainlab(fmt::format("{} --out {} --quiet", experiment.string(), parts),
+             "GRAINLAB_TEST_STOP_AFTER_STEPS=3000 GRAINLAB_TEST_STOP_SIGNAL=INT");
+    const RunCostRecord first = readRunCost(parts);
+    EXPECT_FALSE(first.finished);
+    EXPECT_EQ(first.processes, 1);
+    EXPECT_EQ(first.steps, 3000);
+    ASSERT_EQ(grainlab(fmt::format("--resume {} --quiet", parts)), 0);
+    const RunCostRecord total = readRunCost(parts);
+    EXPECT_TRUE(total.finished);
+    EXPECT_EQ(total.processes, 2);
+    // The resumed process redid the steps since the checkpoint: at least the whole run's steps.
+    EXPECT_GE(total.steps, whole.steps);
+    EXPECT_GT(total.cpuSeconds, first.cpuSeconds);
+}
+
+TEST(RunCost, AFinishedRunWhoseRecordMissedTheEndIsMarkedFinishedOnResume) {
+    const fs::path base = freshFolder("missed");
+    const std::string out = (base / "run").string();
+    ASSERT_EQ(grainlab(fmt::format("{} --out {} --quiet", tinyExperiment(base).string(), out)), 0);
+    RunCostRecord cost = readRunCost(out);
+    cost.finished = false; // as if killed between the last checkpoint and the cost record
+    writeRunCost(out, cost);
+    const std::string runFile = readText(fs::path(out) / "run.h5");
+    ASSERT_EQ(grainlab(fmt::format("--resume {} --quiet", out)), 0);
+    const RunCostRecord after = readRunCost(out);
+    EXPECT_TRUE(after.finished);
+    EXPECT_EQ(after.steps, cost.steps);
+    EXPECT_EQ(after.processes, cost.processes);
+    EXPECT_EQ(readText(fs::path(out) / "run.h5"), runFile) << "the finished run was changed";
+}
+
+TEST(RunCost, ABadRecordIsRefusedNamingTheFile) {
+    const fs::path base = freshFolder("bad");
+    std::ofstream(base / "cost.json") << "{\"finished\": 1}";
+    try {
+        readRunCost(base.string());
+        FAIL();
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("cost.json"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(readRunCost((base / "none").string()).finished); // no record: nothing spent
+}
+
+} // namespace
+} // namespace grainlab
