@@ -55,8 +55,9 @@ inline H5::StrType fixedStringType(std::size_t size) {
     return t;
 }
 
-/// Bytes of one stage name in a series' `stage` column.
+/// Bytes of one stage name in a series' `stage` column, and of its `stage_kind`.
 inline constexpr std::size_t kStageTextSize = 64;
+inline constexpr std::size_t kStageKindSize = 16;
 /// Largest text a reader accepts (the experiment file, the runner state) [bytes].
 inline constexpr std::size_t kMaxTextSize = std::size_t(1) << 28;
 
