@@ -11,8 +11,13 @@
 #include <map>
 #include <stdexcept>
 
+#include <fcntl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/statvfs.h>
+#include <unistd.h>
+
+#include <cerrno>
 
 #include <fmt/format.h>
 
@@ -180,7 +185,9 @@ struct RunFile::Impl {
     /// Refuses a write of about `bytes` that the file system (or the file size limit) has no
     /// room for, before anything of it is written: a write that fails half-way can leave HDF5's
     /// structures half-updated, and the file unreadable.
-    void ensureRoom(std::uint64_t bytes, const std::string& what) const {
+    int reserveFd = -1; ///< run.h5 opened once more, to reserve disk blocks before a write
+
+    void ensureRoom(std::uint64_t bytes, const std::string& what) {
         constexpr std::uint64_t kMargin = std::uint64_t(1) << 19; // HDF5 metadata, new chunks
         const std::uint64_t needed = bytes + bytes / 4 + kMargin;
         std::uint64_t room = std::numeric_limits<std::uint64_t>::max();
@@ -204,6 +211,22 @@ struct RunFile::Impl {
             if (left < room) {
                 room = left;
                 where = "left under the file size limit";
+            }
+        }
+        // Reserve the blocks past the file's end (its size unchanged): another program filling
+        // the disk between this check and the write can then not make the write fail half-way.
+        // A file system without fallocate() gets the statvfs() check only.
+        if (room >= needed) {
+            if (reserveFd < 0) {
+                reserveFd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+            }
+            std::error_code error;
+            const std::uint64_t size = std::filesystem::file_size(path, error);
+            if (reserveFd >= 0 && !error &&
+                ::fallocate(reserveFd, FALLOC_FL_KEEP_SIZE, off_t(size), off_t(needed)) != 0 &&
+                (errno == ENOSPC || errno == EDQUOT)) {
+                room = 0;
+                where = "that the file system could reserve";
             }
         }
         if (room < needed) {
@@ -351,18 +374,27 @@ RunFile::RunFile(const std::string& path, const std::string& experimentText, Mod
 }
 
 RunFile::~RunFile() {
+    const int reserveFd = impl_->reserveFd;
     if (impl_->failed) {
         // After a failed write HDF5's cache holds entries it cannot write; closing would try
         // again (and has crashed). The file stays as the last successful flush left it.
         (void)impl_.release();
-        return;
+    } else {
+        try {
+            impl_->series.clear();
+            impl_->flushNow();
+            impl_->file.close();
+        } catch (...) {
+            // A destructor must not throw; the last explicit flush stands.
+        }
     }
-    try {
-        impl_->series.clear();
-        impl_->flushNow();
-        impl_->file.close();
-    } catch (...) {
-        // A destructor must not throw; the last explicit flush stands.
+    if (reserveFd >= 0) {
+        // Give back the blocks reserved past the end of the file (its size unchanged).
+        struct stat info {};
+        if (::fstat(reserveFd, &info) == 0) {
+            (void)::ftruncate(reserveFd, info.st_size);
+        }
+        ::close(reserveFd);
     }
 }
 
