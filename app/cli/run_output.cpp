@@ -100,6 +100,11 @@ void RunOutputFolder::checkpoint(const std::string& name, const SimulationState&
     runFile_->checkpoint(name, state, runnerState);
 }
 
+void RunOutputFolder::checkpoint(const std::string& name, const SimulationState& state,
+                                 const std::string& runnerState, const StageIdentity& identity) {
+    runFile_->checkpoint(name, state, runnerState, identity);
+}
+
 void RunOutputFolder::sample(double pressure, const SimulationState& state) {
     runFile_->sample(pressure, state);
 }

@@ -44,6 +44,8 @@ public:
     void record(const SeriesTable& series) override;
     void checkpoint(const std::string& name, const SimulationState& state,
                     const std::string& runnerState) override;
+    void checkpoint(const std::string& name, const SimulationState& state,
+                    const std::string& runnerState, const StageIdentity& identity) override;
     void sample(double pressure, const SimulationState& state) override;
     void voidCells(const std::string& name, const VoidCellSet& cells) override;
 

@@ -9,6 +9,8 @@
 #include <map>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "grainlab/measures.h"
 #include "grainlab/run_file.h"
 #include "grainlab/simulation.h"
@@ -16,34 +18,12 @@
 namespace grainlab::ui {
 namespace {
 
-/// "000012-shear-15-kPa-step88000" -> "shear 15 kPa" (the runner's checkpoint names).
-std::string stageOfCheckpoint(const std::string& name) {
-    std::string stage = name;
-    const auto dash = stage.find('-');
-    if (dash != std::string::npos && dash < 8) {
-        stage = stage.substr(dash + 1);
+/// "shear 15 kPa": the stage name the runner shows, from the checkpoint's identity.
+std::string stageName(const CheckpointInfo& info) {
+    if (info.stageKind.empty()) {
+        return info.name; // not recorded (cannot happen in a file of this format)
     }
-    const auto step = stage.rfind("-step");
-    if (step != std::string::npos) {
-        stage = stage.substr(0, step);
-    }
-    std::replace(stage.begin(), stage.end(), '-', ' ');
-    return stage;
-}
-
-/// The test a stage belongs to, as far as rotation goes: "compaction" for every compaction
-/// stage, the pressure ("15 kPa") for a test's equilibration and shear; "" for anything else
-/// (e.g. an "interrupted" checkpoint, which belongs to the test before it).
-std::string testOfStage(const std::string& stage) {
-    if (stage.rfind("compaction", 0) == 0) {
-        return "compaction";
-    }
-    for (const char* prefix : {"equilibration ", "shear "}) {
-        if (stage.rfind(prefix, 0) == 0) {
-            return stage.substr(std::string(prefix).size());
-        }
-    }
-    return {};
+    return fmt::format("{} {:g} kPa", info.stageKind, info.pressure / 1000.0);
 }
 
 } // namespace
@@ -51,52 +31,27 @@ std::string testOfStage(const std::string& stage) {
 RunFileView openRunFile(const std::string& path) {
     RunFileView view;
     view.path = path;
-    view.checkpoints = listCheckpoints(path);
+    const std::vector<CheckpointInfo> infos = listCheckpointInfo(path);
     const std::string prefix = std::filesystem::path(path).filename().string() + ": ";
     for (const std::string& test : listTests(path)) {
         SeriesTable table = readSeries(path, test);
         table.test = prefix + test;
         view.series.push_back(std::move(table));
     }
-    for (const std::string& name : view.checkpoints) {
-        const auto at = name.rfind("-step");
-        const std::int64_t step = at == std::string::npos ? -1 : std::atoll(name.c_str() + at + 5);
-        const std::string stage = stageOfCheckpoint(name);
-        std::string test;
-        double strain = std::numeric_limits<double>::quiet_NaN();
-        for (const SeriesTable& table : view.series) {
-            const int stepColumn = table.column("step"), eps1 = table.column("eps1");
-            if (stepColumn < 0 || eps1 < 0) {
-                continue;
-            }
-            for (std::size_t r = 0; r < table.rows.size(); ++r) {
-                if (table.rows[r][stepColumn] == double(step) &&
-                    (r >= table.stages.size() || table.stages[r] == stage)) {
-                    strain = table.rows[r][eps1];
-                    test = table.test;
-                }
-            }
-        }
-        view.checkpointStep.push_back(step);
-        view.checkpointStage.push_back(stage);
-        view.checkpointTest.push_back(test);
-        view.checkpointStrain.push_back(strain);
-    }
-    // Rotation counts from the first checkpoint of each test: the runner writes one as a test
-    // starts (the sample it equilibrates), holding exactly the orientations its live snapshots
-    // count rotation from.
-    std::map<std::string, int> first; // test of the stage -> index into thetaAtTestStart
-    std::string current;
-    for (std::size_t k = 0; k < view.checkpoints.size(); ++k) {
-        const std::string test = testOfStage(view.checkpointStage[k]);
-        if (!test.empty()) {
-            current = test;
-        }
-        auto it = first.find(current);
+    // Each checkpoint's stage, test, step and eps1 are attributes of the checkpoint, and so is
+    // the orientation at its test's start (the first checkpoint of each test is read for it).
+    std::map<std::string, int> first; // test -> index into thetaAtTestStart
+    for (const CheckpointInfo& info : infos) {
+        view.checkpoints.push_back(info.name);
+        view.checkpointStep.push_back(info.step);
+        view.checkpointStage.push_back(stageName(info));
+        view.checkpointTest.push_back(info.test.empty() ? std::string() : prefix + info.test);
+        view.checkpointStrain.push_back(
+            info.stageKind.empty() ? std::numeric_limits<double>::quiet_NaN() : info.axialStrain);
+        auto it = first.find(info.test);
         if (it == first.end()) {
-            const SimulationState state = readState(path, checkpointGroup(view.checkpoints[k]));
-            view.thetaAtTestStart.push_back(state.grains.theta);
-            it = first.emplace(current, static_cast<int>(view.thetaAtTestStart.size()) - 1).first;
+            view.thetaAtTestStart.push_back(readThetaAtTestStart(path, info.name));
+            it = first.emplace(info.test, static_cast<int>(view.thetaAtTestStart.size()) - 1).first;
         }
         view.checkpointTestStart.push_back(it->second);
     }
@@ -116,7 +71,7 @@ SnapshotPtr runFileSnapshot(const RunFileView& file, std::size_t index) {
             ? file.thetaAtTestStart[file.checkpointTestStart[index]]
             : none;
     fillSnapshotScene(*s, sim, thetaAtStart);
-    s->stage = stageOfCheckpoint(name);
+    s->stage = index < file.checkpointStage.size() ? file.checkpointStage[index] : name;
     if (index < file.checkpointStrain.size() && !std::isnan(file.checkpointStrain[index])) {
         s->axialStrain = file.checkpointStrain[index];
         s->test = file.checkpointTest[index];

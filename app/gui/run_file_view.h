@@ -18,15 +18,16 @@ namespace grainlab::ui {
 struct RunFileView {
     std::string path;
     std::vector<std::string> checkpoints; ///< in write order
-    /// Per checkpoint: its step and stage (from its name), and the test and eps1 of the series
-    /// row recorded at that step ("" and NaN when no row matches).
+    /// Per checkpoint, from its identity attributes in the file: its step, stage ("shear 15
+    /// kPa"), test (with the file name, as the series) and eps1 of its test.
     std::vector<std::int64_t> checkpointStep;
     std::vector<std::string> checkpointStage;
     std::vector<std::string> checkpointTest;
     std::vector<double> checkpointStrain;
     /// Where each checkpoint's rotation counts from: an index into thetaAtTestStart, the grain
-    /// orientations [rad] at the first checkpoint of each test (its equilibration start, where
-    /// the live run's rotation counts from too; for compaction, the run's first checkpoint).
+    /// orientations [rad] at the start of each test as the file records them (the sample's as
+    /// its equilibration starts, where the live run's rotation counts from too; for the
+    /// compaction, the generated assembly's).
     std::vector<int> checkpointTestStart;
     std::vector<std::vector<double>> thetaAtTestStart;
     /// Every test's series; the test names carry the file name, e.g. "run.h5: p015kPa", so that
@@ -34,13 +35,13 @@ struct RunFileView {
     std::vector<SeriesTable> series;
 };
 
-/// Lists a run file's checkpoints, reads its series and the orientations at the first checkpoint
-/// of each test. Throws std::runtime_error.
+/// Lists a run file's checkpoints with their identities, reads its series and the orientations
+/// at the start of each test. Throws std::runtime_error.
 RunFileView openRunFile(const std::string& path);
 
 /// The scene stored at checkpoint `index`: grains, contacts and forces (from the stored state),
-/// load-bearing grains and void cells, the stage (from the checkpoint's name), eps1 (from the
-/// series row of that step) and each grain's rotation since the first checkpoint of its test.
+/// load-bearing grains and void cells, its stage and eps1 (from its identity) and each grain's
+/// rotation since the start of its test.
 /// Throws std::runtime_error.
 SnapshotPtr runFileSnapshot(const RunFileView& file, std::size_t index);
 

@@ -68,6 +68,7 @@ struct ExperimentRunner::Impl {
     std::int64_t checkpointCounter = 0;
     bool stageDone = false; ///< the stage has ended; the next one is still to start
     std::vector<double> thetaAtTestStart;
+    std::vector<double> thetaAtRunStart; ///< the generated assembly's (compaction identity)
     std::map<double, SimulationState> samples;
     std::vector<SeriesTable> series;
     int currentSeries = -1;
@@ -87,6 +88,29 @@ struct ExperimentRunner::Impl {
         default:
             return "done";
         }
+    }
+    std::string stageKind() const {
+        switch (phase) {
+        case Phase::Compaction:
+            return "compaction";
+        case Phase::Equilibration:
+            return "equilibration";
+        case Phase::Shear:
+            return "shear";
+        default:
+            return "done";
+        }
+    }
+    /// The identity of the current stage, for its checkpoints.
+    StageIdentity identity() const {
+        StageIdentity id;
+        id.kind = stageKind();
+        id.test = currentSeries >= 0 ? series[currentSeries].test : kCompactionSeries;
+        id.pressure = pressure();
+        id.step = sim->stepCount();
+        id.axialStrain = eps1();
+        id.thetaAtTestStart = phase == Phase::Compaction ? thetaAtRunStart : thetaAtTestStart;
+        return id;
     }
     const EquilibriumCriterion& criterion() const {
         return phase == Phase::Compaction ? config.compaction.criterion
@@ -207,6 +231,8 @@ struct ExperimentRunner::Impl {
         SeriesTable& t = series[currentSeries];
         t.rows.push_back(seriesRow(measures, in));
         t.stages.push_back(stageName());
+        t.stageKinds.push_back(stageKind());
+        t.stagePressures.push_back(pressure());
         lastEps1 = in.eps1;
         lastEpsv = in.epsv;
         haveLast = true;
@@ -238,6 +264,8 @@ struct ExperimentRunner::Impl {
         j["checkpoint_counter"] = checkpointCounter;
         j["stage_done"] = stageDone;
         j["theta_at_test_start"] = thetaAtTestStart;
+        j["theta_at_run_start"] =
+            phase == Phase::Compaction ? thetaAtRunStart : std::vector<double>{};
         j["current_series"] = currentSeries >= 0 ? series[currentSeries].test : "";
         nlohmann::json rows = nlohmann::json::object();
         for (const auto& t : series) {
@@ -265,17 +293,20 @@ struct ExperimentRunner::Impl {
         checkpointCounter = j.at("checkpoint_counter");
         stageDone = j.at("stage_done");
         thetaAtTestStart = j.at("theta_at_test_start").get<std::vector<double>>();
+        thetaAtRunStart = j.at("theta_at_run_start").get<std::vector<double>>();
         const std::string current = j.at("current_series");
         currentSeries = current.empty() ? -1 : seriesIndex(current);
     }
 
-    void checkpoint(const std::string& label) {
+    void checkpoint(const std::string& label) { checkpoint(label, identity()); }
+
+    void checkpoint(const std::string& label, const StageIdentity& id) {
         if (!output) {
             return;
         }
         ++checkpointCounter;
         const std::string name = fmt::format("{:06d}-{}", checkpointCounter, label);
-        output->checkpoint(name, sim->state(), runnerState());
+        output->checkpoint(name, sim->state(), runnerState(), id);
         output->voidCells(name, computeVoidCells(sim->contactNetwork()));
     }
 
@@ -377,11 +408,12 @@ struct ExperimentRunner::Impl {
     /// again; after the last stage it holds the finished run (phase Done).
     void stageEndCheckpoint(bool last) {
         const std::string label = checkpointLabel();
+        const StageIdentity id = identity();
         if (last) {
             phase = Phase::Done;
         }
         stageDone = true;
-        checkpoint(label);
+        checkpoint(label, id);
         continueAfterStage();
     }
 
@@ -437,6 +469,7 @@ ExperimentRunner::ExperimentRunner(ExperimentConfig config, RunOutput* output)
     p.servo.maxStrainRate = c.compaction.maxStrainRate;
     p.threads = threadsFor(c);
     impl_->sim = std::make_unique<Simulation>(generateGridAssembly(c.assembly, p));
+    impl_->thetaAtRunStart = impl_->sim->stateRef().grains.theta;
     impl_->startCompaction(0);
     // A checkpoint of the generated assembly: a run killed before its first periodic
     // checkpoint can still be resumed.
@@ -454,6 +487,8 @@ ExperimentRunner::ExperimentRunner(ExperimentConfig config, ResumePoint resume, 
         const std::size_t keep = it == rows.end() ? 0 : it->second;
         t.rows.resize(std::min(keep, t.rows.size()));
         t.stages.resize(std::min(keep, t.stages.size()));
+        t.stageKinds.resize(std::min(keep, t.stageKinds.size()));
+        t.stagePressures.resize(std::min(keep, t.stagePressures.size()));
         impl_->series.push_back(std::move(t));
     }
     resume.state.parameters.threads = threadsFor(impl_->config);

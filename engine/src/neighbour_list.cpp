@@ -194,7 +194,8 @@ void Simulation::buildPairIndex() {
         pairSmallerWidth_[p] = 2.0 * std::min(a, b);
     }
     if (skinInUse_ <= 0.0) {
-        const auto widths = cellWidths(s_.cell);
+        // A restart: the skin of the stored list, from the cell it was built in.
+        const auto widths = cellWidths(s_.referenceCell);
         skinInUse_ = std::min(skin_, 0.45 * (std::min(widths[0], widths[1]) - 4.0 * maxHalfWidth_));
     }
 }

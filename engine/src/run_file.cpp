@@ -11,8 +11,13 @@
 #include <map>
 #include <stdexcept>
 
+#include <fcntl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/statvfs.h>
+#include <unistd.h>
+
+#include <cerrno>
 
 #include <fmt/format.h>
 
@@ -92,6 +97,18 @@ void checkTable(const SeriesTable& t) {
                                                     t.test, name));
         }
     }
+    for (const std::string& kind : t.stageKinds) {
+        if (kind.size() >= hdf5io::kStageKindSize) {
+            throw std::invalid_argument(
+                fmt::format("series {}: stage kind \"{}\" is too long", t.test, kind));
+        }
+    }
+    for (double p : t.stagePressures) {
+        if (!std::isfinite(p)) {
+            throw std::invalid_argument(
+                fmt::format("series {}: a stage pressure is not finite", t.test));
+        }
+    }
     for (const std::string& stage : t.stages) {
         if (stage.size() >= hdf5io::kStageTextSize) {
             throw std::invalid_argument(fmt::format("series {}: stage name \"{}\" is longer than "
@@ -148,6 +165,7 @@ struct RunFile::Impl {
         std::vector<SeriesColumn> columns;
         std::vector<H5::DataSet> values;
         H5::DataSet stage;
+        H5::DataSet stageKind, stagePressure; ///< the stage identity of each row
         std::size_t rows = 0;
     };
 
@@ -160,13 +178,16 @@ struct RunFile::Impl {
     void createSeries(H5::Group& test, const SeriesTable& table, OpenSeries& out);
     void writeStateGroup(const std::string& parent, const std::string& name,
                          const SimulationState& state, const std::string* runnerState,
-                         const std::vector<std::pair<std::string, double>>& extra);
+                         const std::vector<std::pair<std::string, double>>& extra,
+                         const StageIdentity* identity = nullptr);
     bool failed = false; ///< a write failed: nothing more is written, the file is left as is
 
     /// Refuses a write of about `bytes` that the file system (or the file size limit) has no
     /// room for, before anything of it is written: a write that fails half-way can leave HDF5's
     /// structures half-updated, and the file unreadable.
-    void ensureRoom(std::uint64_t bytes, const std::string& what) const {
+    int reserveFd = -1; ///< run.h5 opened once more, to reserve disk blocks before a write
+
+    void ensureRoom(std::uint64_t bytes, const std::string& what) {
         constexpr std::uint64_t kMargin = std::uint64_t(1) << 19; // HDF5 metadata, new chunks
         const std::uint64_t needed = bytes + bytes / 4 + kMargin;
         std::uint64_t room = std::numeric_limits<std::uint64_t>::max();
@@ -190,6 +211,22 @@ struct RunFile::Impl {
             if (left < room) {
                 room = left;
                 where = "left under the file size limit";
+            }
+        }
+        // Reserve the blocks past the file's end (its size unchanged): another program filling
+        // the disk between this check and the write can then not make the write fail half-way.
+        // A file system without fallocate() gets the statvfs() check only.
+        if (room >= needed) {
+            if (reserveFd < 0) {
+                reserveFd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+            }
+            std::error_code error;
+            const std::uint64_t size = std::filesystem::file_size(path, error);
+            if (reserveFd >= 0 && !error &&
+                ::fallocate(reserveFd, FALLOC_FL_KEEP_SIZE, off_t(size), off_t(needed)) != 0 &&
+                (errno == ENOSPC || errno == EDQUOT)) {
+                room = 0;
+                where = "that the file system could reserve";
             }
         }
         if (room < needed) {
@@ -252,6 +289,13 @@ void RunFile::Impl::createSeries(H5::Group& test, const SeriesTable& table, Open
     }
     out.stage = out.group.createDataSet("stage", fixedStringType(kStageTextSize), space, chunked);
     writeHash(out.stage, nullptr, 0);
+    out.stageKind =
+        out.group.createDataSet("stage_kind", fixedStringType(kStageKindSize), space, chunked);
+    writeHash(out.stageKind, nullptr, 0);
+    out.stagePressure =
+        out.group.createDataSet("stage_pressure", H5Types<double>::file(), space, chunked);
+    writeAttribute(out.stagePressure, "unit", std::string("Pa"));
+    writeHash(out.stagePressure, nullptr, 0);
 }
 
 RunFile::Impl::OpenSeries& RunFile::Impl::seriesFor(const SeriesTable& table) {
@@ -270,6 +314,8 @@ RunFile::Impl::OpenSeries& RunFile::Impl::seriesFor(const SeriesTable& table) {
                 s.values.push_back(ds);
             }
             s.stage = s.group.openDataSet("stage");
+            s.stageKind = s.group.openDataSet("stage_kind");
+            s.stagePressure = s.group.openDataSet("stage_pressure");
             s.rows = static_cast<std::size_t>(s.stage.getSpace().getSimpleExtentNpoints());
         } else {
             H5::Group test = openOrCreateGroup(tests, link);
@@ -328,18 +374,27 @@ RunFile::RunFile(const std::string& path, const std::string& experimentText, Mod
 }
 
 RunFile::~RunFile() {
+    const int reserveFd = impl_->reserveFd;
     if (impl_->failed) {
         // After a failed write HDF5's cache holds entries it cannot write; closing would try
         // again (and has crashed). The file stays as the last successful flush left it.
         (void)impl_.release();
-        return;
+    } else {
+        try {
+            impl_->series.clear();
+            impl_->flushNow();
+            impl_->file.close();
+        } catch (...) {
+            // A destructor must not throw; the last explicit flush stands.
+        }
     }
-    try {
-        impl_->series.clear();
-        impl_->flushNow();
-        impl_->file.close();
-    } catch (...) {
-        // A destructor must not throw; the last explicit flush stands.
+    if (reserveFd >= 0) {
+        // Give back the blocks reserved past the end of the file (its size unchanged).
+        struct stat info {};
+        if (::fstat(reserveFd, &info) == 0) {
+            (void)::ftruncate(reserveFd, info.st_size);
+        }
+        ::close(reserveFd);
     }
 }
 
@@ -381,6 +436,8 @@ void RunFile::recordNow(const SeriesTable& table) {
             ds.extend(&size);
         }
         s.stage.extend(&size);
+        s.stageKind.extend(&size);
+        s.stagePressure.extend(&size);
         s.rows = n;
         if (count > 0) {
             H5::DataSpace memory(1, &count);
@@ -416,6 +473,28 @@ void RunFile::recordNow(const SeriesTable& table) {
                       stages.begin() + k * kStageTextSize);
         }
         writeHash(s.stage, stages.data(), stages.size());
+        // The stage identity of each row ("" and 0 for a table without one).
+        const bool identified = table.stageKinds.size() == n && table.stagePressures.size() == n;
+        std::vector<char> kinds(n * kStageKindSize, '\0');
+        std::vector<double> pressures(n, 0.0);
+        for (std::size_t k = 0; identified && k < n; ++k) {
+            std::copy(table.stageKinds[k].begin(), table.stageKinds[k].end(),
+                      kinds.begin() + k * kStageKindSize);
+            pressures[k] = table.stagePressures[k];
+        }
+        if (n > 0) {
+            const hsize_t all = n, zero = 0;
+            H5::DataSpace memory(1, &all);
+            H5::DataSpace kindSpace = s.stageKind.getSpace();
+            kindSpace.selectHyperslab(H5S_SELECT_SET, &all, &zero);
+            s.stageKind.write(kinds.data(), fixedStringType(kStageKindSize), memory, kindSpace);
+            H5::DataSpace pressureSpace = s.stagePressure.getSpace();
+            pressureSpace.selectHyperslab(H5S_SELECT_SET, &all, &zero);
+            s.stagePressure.write(pressures.data(), H5Types<double>::memory(), memory,
+                                  pressureSpace);
+        }
+        writeHash(s.stageKind, kinds.data(), kinds.size());
+        writeHash(s.stagePressure, pressures.data(), pressures.size() * sizeof(double));
         const std::chrono::duration<double> sinceFlush =
             std::chrono::steady_clock::now() - impl_->lastFlush;
         if (sinceFlush.count() >= kRecordFlushSeconds) {
@@ -426,7 +505,8 @@ void RunFile::recordNow(const SeriesTable& table) {
 
 void RunFile::Impl::writeStateGroup(const std::string& parentName, const std::string& name,
                                     const SimulationState& state, const std::string* runnerState,
-                                    const std::vector<std::pair<std::string, double>>& extra) {
+                                    const std::vector<std::pair<std::string, double>>& extra,
+                                    const StageIdentity* identity) {
     H5::Group parent = file.openGroup(parentName);
     const std::string link = linkName(name);
     const std::string scratch = link + kWritingSuffix;
@@ -442,6 +522,14 @@ void RunFile::Impl::writeStateGroup(const std::string& parentName, const std::st
         }
         if (runnerState) {
             writeStringDataset(g, "runner_state", *runnerState);
+        }
+        if (identity) {
+            // The stage as data (the state's own attribute `step` is its step).
+            writeAttribute(g, "stage_kind", identity->kind);
+            writeAttribute(g, "test", identity->test);
+            writeAttribute(g, "pressure", identity->pressure);
+            writeAttribute(g, "axial_strain", identity->axialStrain);
+            writeArray(g, "theta_at_test_start", identity->thetaAtTestStart, "rad");
         }
         writeAttribute(g, "index", nextIndex(parent));
     } catch (...) {
@@ -470,14 +558,23 @@ void RunFile::checkpoint(const std::string& name, const SimulationState& state,
                          const std::string& runnerState) {
     // With its void cells (written next): about as many cells as grains / 2.
     const std::uint64_t bytes = stateBytes(state) + runnerState.size() + state.grains.size() * 64;
-    impl_->write(bytes, "checkpoint " + name, [&] { checkpointNow(name, state, runnerState); });
+    impl_->write(bytes, "checkpoint " + name,
+                 [&] { checkpointNow(name, state, runnerState, nullptr); });
+}
+
+void RunFile::checkpoint(const std::string& name, const SimulationState& state,
+                         const std::string& runnerState, const StageIdentity& identity) {
+    const std::uint64_t bytes = stateBytes(state) + runnerState.size() + state.grains.size() * 72;
+    impl_->write(bytes, "checkpoint " + name,
+                 [&] { checkpointNow(name, state, runnerState, &identity); });
 }
 
 void RunFile::checkpointNow(const std::string& name, const SimulationState& state,
-                            const std::string& runnerState) {
+                            const std::string& runnerState, const StageIdentity* identity) {
     try {
-        guarded(impl_->path, "writing checkpoint " + name,
-                [&] { impl_->writeStateGroup("checkpoints", name, state, &runnerState, {}); });
+        guarded(impl_->path, "writing checkpoint " + name, [&] {
+            impl_->writeStateGroup("checkpoints", name, state, &runnerState, {}, identity);
+        });
     } catch (const std::runtime_error& e) {
         const std::string what = e.what();
         if (what.starts_with(impl_->path)) {
@@ -598,6 +695,36 @@ std::vector<std::string> listCheckpoints(const std::string& path) {
     });
 }
 
+std::vector<CheckpointInfo> listCheckpointInfo(const std::string& path) {
+    return withFile(path, "listing checkpoints", [&](H5::H5File& file) {
+        const H5::Group parent = file.openGroup("checkpoints");
+        std::vector<CheckpointInfo> out;
+        for (const auto& link : childrenInWriteOrder(parent)) {
+            const H5::Group g = parent.openGroup(link);
+            CheckpointInfo info;
+            info.name = readStringAttribute(g, "name");
+            info.step = readAttribute<std::int64_t>(g, "step");
+            if (g.attrExists("stage_kind")) {
+                info.stageKind = readStringAttribute(g, "stage_kind");
+                info.test = readStringAttribute(g, "test");
+                info.pressure = readAttribute<double>(g, "pressure");
+                info.axialStrain = readAttribute<double>(g, "axial_strain");
+            }
+            out.push_back(std::move(info));
+        }
+        return out;
+    });
+}
+
+std::vector<double> readThetaAtTestStart(const std::string& path, const std::string& name) {
+    return withFile(
+        path, "reading the orientations at the test start of " + name, [&](H5::H5File& file) {
+            const H5::Group g = file.openGroup(checkpointGroup(name));
+            return g.nameExists("theta_at_test_start") ? readArray<double>(g, "theta_at_test_start")
+                                                       : std::vector<double>{};
+        });
+}
+
 std::vector<double> listSamples(const std::string& path) {
     return withFile(path, "listing samples", [&](H5::H5File& file) {
         const H5::Group parent = file.openGroup("samples");
@@ -627,6 +754,15 @@ SeriesTable readSeries(const std::string& path, const std::string& test) {
         table.test = test;
         table.stages =
             readStringArray(g.openDataSet("stage"), "dataset " + objectName(g) + "/stage");
+        table.stageKinds = readStringArray(g.openDataSet("stage_kind"),
+                                           "dataset " + objectName(g) + "/stage_kind");
+        table.stagePressures = readArray<double>(g, "stage_pressure");
+        if (table.stageKinds.size() != table.stages.size() ||
+            table.stagePressures.size() != table.stages.size()) {
+            throw std::runtime_error(fmt::format("series {}: stage identities of another length "
+                                                 "than its records",
+                                                 test));
+        }
         table.rows.assign(table.stages.size(), {});
         for (const auto& name : readStringListAttribute(g, "columns")) {
             const H5::DataSet ds = g.openDataSet(name);

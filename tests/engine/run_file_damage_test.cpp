@@ -212,21 +212,43 @@ TEST(RunFileDamage, OtherVersionsAndOtherFilesAreRefusedByName) {
 }
 
 TEST(RunFileDamage, ReadOnlyFileNamesTheCause) {
-    if (::geteuid() == 0) {
-        GTEST_SKIP() << "root may write any file";
-    }
     const fs::path dir = scratch("readonly");
     const std::string path = writeRunFile(dir);
-    fs::permissions(path, fs::perms::owner_read);
-    try {
-        RunFile file(path, "{\"name\": \"damage\", \"seed\": 5}", RunFile::Mode::Resume);
-        FAIL() << "a read-only file was opened for writing";
-    } catch (const std::runtime_error& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find(path), std::string::npos) << what;
-        EXPECT_NE(what.find("ermission"), std::string::npos) << what;
+    fs::permissions(path, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+    fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                             fs::perms::others_read | fs::perms::others_exec);
+    // Root may write any file: the attempt runs in a child that gives up root (if it has it).
+    int pipeFds[2];
+    ASSERT_EQ(::pipe(pipeFds), 0);
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        if (::geteuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0)) {
+            _exit(3);
+        }
+        std::string message = "opened";
+        try {
+            RunFile file(path, "{\"name\": \"damage\", \"seed\": 5}", RunFile::Mode::Resume);
+        } catch (const std::runtime_error& e) {
+            message = e.what();
+        }
+        (void)!::write(pipeFds[1], message.data(), message.size());
+        _exit(0);
     }
-    fs::permissions(path, fs::perms::owner_all);
+    ::close(pipeFds[1]);
+    std::string what;
+    char buffer[512];
+    for (ssize_t n; (n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0;) {
+        what.append(buffer, std::size_t(n));
+    }
+    ::close(pipeFds[0]);
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "could not give up root";
+    EXPECT_NE(what, "opened") << "a read-only file was opened for writing";
+    EXPECT_NE(what.find(path), std::string::npos) << what;
+    EXPECT_NE(what.find("Permission denied"), std::string::npos) << what;
+    EXPECT_EQ(what.find("H5File::H5File"), std::string::npos) << what;
     fs::remove_all(dir);
 }
 

@@ -446,3 +446,43 @@ TEST(CsvSeries, NonFiniteValueIsRefusedNamingTheColumn) {
 
 } // namespace
 } // namespace grainlab
+
+namespace grainlab {
+namespace {
+
+// A restart in a cell so narrow that it limits the Verlet skin: the skin of the stored list is
+// the one of the cell at its last rebuild (the reference cell), not of the cell now, or the
+// restarted run rebuilds its list at other steps.
+TEST(RunFile, RestartInANarrowCellKeepsTheSkinOfItsList) {
+    AssemblySpec spec;
+    spec.grainCount = 9;
+    spec.widths = evenlySpacedWidths(1.0e-3, 2.0e-3, 2);
+    spec.aspectRatio = 0.6;
+    spec.gap = 0.1;
+    spec.seed = 3;
+    SimulationParameters p;
+    p.friction = 0.5;
+    p.threads = 1;
+    p.neighbourSkin = 3.0e-3; // more than the cell allows: 0.45 (width - 4 a_max)
+    SimulationState s = generateGridAssembly(spec, p);
+    // The cell widens (extension), so the skin it allows grows: a restart that took the skin
+    // from the cell now would keep its list longer than the run it continues.
+    s.axes[0] = {AxisMode::Strain, -500.0, 0.0, 0.0};
+    s.axes[1] = {AxisMode::Strain, -500.0, 0.0, 0.0};
+    Simulation original(std::move(s));
+    original.advance(50);
+    int restarts = 0;
+    for (int k = 0; k < 40; ++k) {
+        Simulation restarted(original.state());
+        original.advance(25);
+        restarted.advance(25);
+        ASSERT_TRUE(identicalDynamics(original.state(), restarted.state()))
+            << "restart at step " << original.stepCount() - 25 << " differs after 25 steps";
+        ++restarts;
+    }
+    EXPECT_EQ(restarts, 40);
+    EXPECT_GE(original.neighbourRebuilds(), 2); // the first list, and one rebuild at least
+}
+
+} // namespace
+} // namespace grainlab

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "grainlab/experiment.h"
+#include "grainlab/run_output.h"
 #include "grainlab/series.h"
 #include "grainlab/simulation.h"
 #include "grainlab/snapshot.h"
@@ -30,24 +31,6 @@ struct RunProgress {
     double fraction = 0;         ///< of the whole experiment, estimated [0, 1]
     std::int64_t step = 0;       ///< steps of the current simulation
     bool finished = false;
-};
-
-/// Receives what a run produces (implemented by the run file / CSV writers, or by tests).
-class RunOutput {
-public:
-    virtual ~RunOutput() = default;
-    /// A new record (row) of test `series.test`; `series` holds all rows so far.
-    virtual void record(const SeriesTable& series) = 0;
-    /// A complete checkpoint: continuing from it gives the same numbers.
-    virtual void checkpoint(const std::string& name, const SimulationState& state,
-                            const std::string& runnerState) = 0;
-    /// A compacted sample, kept for the shear tests.
-    virtual void sample(double pressure, const SimulationState& state) = 0;
-    /// The void cells of the configuration of checkpoint `name` (written just before).
-    virtual void voidCells(const std::string& name, const VoidCellSet& cells) {
-        (void)name;
-        (void)cells;
-    }
 };
 
 /// What a run needs to continue from a checkpoint (read back from the run file).

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "grainlab/experiment_runner.h"
+#include "grainlab/run_output.h"
 #include "grainlab/series.h"
 #include "grainlab/simulation_state.h"
 
@@ -51,6 +51,10 @@ public:
     /// Writes /checkpoints/<name> (replacing an older one of that name) and flushes.
     void checkpoint(const std::string& name, const SimulationState& state,
                     const std::string& runnerState) override;
+    /// ... with the identity of its stage as attributes (stage_kind, test, pressure,
+    /// axial_strain) and the dataset theta_at_test_start.
+    void checkpoint(const std::string& name, const SimulationState& state,
+                    const std::string& runnerState, const StageIdentity& identity) override;
     /// Writes /samples/<pressure>Pa (e.g. /samples/15000Pa) and flushes.
     void sample(double pressure, const SimulationState& state) override;
     /// Writes /checkpoints/<name>/void_cells: one row per void cell (valence, area, elongation,
@@ -64,7 +68,7 @@ public:
 private:
     void recordNow(const SeriesTable& series);
     void checkpointNow(const std::string& name, const SimulationState& state,
-                       const std::string& runnerState);
+                       const std::string& runnerState, const StageIdentity* identity);
     void sampleNow(double pressure, const SimulationState& state);
     void voidCellsNow(const std::string& name, const VoidCellSet& cells);
 
@@ -83,6 +87,19 @@ SimulationState readState(const std::string& path, const std::string& groupPath)
 std::string readRunnerState(const std::string& path, const std::string& groupPath);
 /// Checkpoint names in write order (complete checkpoints only).
 std::vector<std::string> listCheckpoints(const std::string& path);
+/// A checkpoint's name and the identity of its stage (StageIdentity without the orientations).
+struct CheckpointInfo {
+    std::string name;
+    std::string stageKind; ///< "compaction", "equilibration", "shear" ("" if not recorded)
+    std::string test;      ///< "compaction", "p100kPa" ("" if not recorded)
+    double pressure = 0;   ///< [Pa]
+    std::int64_t step = 0;
+    double axialStrain = 0; ///< eps1 of its test [-]
+};
+/// Every complete checkpoint with its identity, in write order.
+std::vector<CheckpointInfo> listCheckpointInfo(const std::string& path);
+/// The orientations at the start of the checkpoint's test [rad] (empty if not recorded).
+std::vector<double> readThetaAtTestStart(const std::string& path, const std::string& name);
 /// Sample pressures [Pa] in write order.
 std::vector<double> listSamples(const std::string& path);
 /// Test names in the order their first record was written.

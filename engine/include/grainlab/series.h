@@ -20,6 +20,10 @@ struct SeriesTable {
     std::vector<SeriesColumn> columns;         ///< numeric columns, in order
     std::vector<std::vector<double>> rows;     ///< rows[k][c] is column c of record k
     std::vector<std::string> stages;           ///< stage name of record k
+    /// The identity of record k's stage as data (run file: stage_kind, pressure); empty for a
+    /// table that does not come from the runner (e.g. read from a CSV file).
+    std::vector<std::string> stageKinds; ///< "compaction", "equilibration", "shear"
+    std::vector<double> stagePressures;  ///< the stage's confining pressure [Pa]
 
     /// Index of the column `name`, or -1.
     int column(const std::string& name) const {

@@ -1,0 +1,53 @@
+#pragma once
+// The interface through which the experiment runner hands out what a run produces: series
+// records, checkpoints with the identity of their stage, compacted samples and void cells.
+// Implemented by the run file (run_file.h), the run output folder of `grainlab run`, the
+// window's run adapter and tests. Called on the thread that drives the runner.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "grainlab/series.h"
+#include "grainlab/simulation_state.h"
+#include "grainlab/void_cells.h"
+
+namespace grainlab {
+
+/// What stage a checkpoint belongs to, as data (the run file's checkpoint attributes).
+struct StageIdentity {
+    std::string kind;       ///< "compaction", "equilibration" or "shear"
+    std::string test;       ///< the series its records go to: "compaction", "p100kPa"
+    double pressure = 0;    ///< the stage's confining pressure [Pa]
+    std::int64_t step = 0;  ///< simulation step of the checkpoint
+    double axialStrain = 0; ///< eps1 of the test [-]
+    /// Grain orientations at the start of the test, which rotation counts from [rad]: the
+    /// sample's as its equilibration starts; the generated assembly's for the compaction.
+    std::vector<double> thetaAtTestStart;
+};
+
+class RunOutput {
+public:
+    virtual ~RunOutput() = default;
+    /// A new record (row) of test `series.test`; `series` holds all rows so far.
+    virtual void record(const SeriesTable& series) = 0;
+    /// A complete checkpoint: continuing from it gives the same numbers.
+    virtual void checkpoint(const std::string& name, const SimulationState& state,
+                            const std::string& runnerState) = 0;
+    /// The same, with the identity of its stage (the runner calls this one; by default it
+    /// drops the identity).
+    virtual void checkpoint(const std::string& name, const SimulationState& state,
+                            const std::string& runnerState, const StageIdentity& identity) {
+        (void)identity;
+        checkpoint(name, state, runnerState);
+    }
+    /// A compacted sample, kept for the shear tests.
+    virtual void sample(double pressure, const SimulationState& state) = 0;
+    /// The void cells of the configuration of checkpoint `name` (written just before).
+    virtual void voidCells(const std::string& name, const VoidCellSet& cells) {
+        (void)name;
+        (void)cells;
+    }
+};
+
+} // namespace grainlab
