@@ -29,42 +29,14 @@
 #include "grainlab/ui/scene_options_bar.h"
 #include "grainlab/ui/scene_view.h"
 #include "gui/main_window.h"
+#include "window_test_support.h"
 
 namespace grainlab::ui {
 namespace {
 
-ExperimentConfig smallExperiment() {
-    ExperimentConfig c =
-        readExperimentFile(GRAINLAB_SOURCE_DIR "/resources/experiments/quick.json");
-    c.assembly.grainCount = 120;
-    c.compaction.pressures = {15e3};
-    c.shear.pressures = {15e3};
-    c.shear.targetAxialStrain = 0.005;
-    c.parameters.threads = 1;
-    return c;
-}
-
-template <class Predicate>
-bool waitFor(Predicate done, int timeoutMs = 60000) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
-    while (!done()) {
-        if (std::chrono::steady_clock::now() > end) {
-            return false;
-        }
-        QTest::qWait(10);
-    }
-    return true;
-}
-
-/// Clicks the toolbar button of an action, like a user.
-void click(MainWindow& w, QAction* action) {
-    QToolBar* bar = w.findChild<QToolBar*>(QStringLiteral("runToolBar"));
-    ASSERT_NE(bar, nullptr);
-    QWidget* button = bar->widgetForAction(action);
-    ASSERT_NE(button, nullptr);
-    ASSERT_TRUE(button->isEnabled()) << action->text().toStdString();
-    QTest::mouseClick(button, Qt::LeftButton);
-}
+using window_tests::click;
+using window_tests::smallExperiment;
+using window_tests::waitFor;
 
 struct Fixture {
     MainWindow window;
@@ -228,8 +200,7 @@ TEST(MainWindow, RunsToTheEndAndWritesScreenshots) {
 }
 
 TEST(MainWindow, HoveringAChartShowsTheLiveRunsKeptSnapshotUntilTheHoverEnds) {
-    ExperimentConfig config = smallExperiment();
-    config.shear.targetAxialStrain = 0.02; // long enough to pause during the shear
+    const ExperimentConfig config = smallExperiment(0.02); // long enough to pause during the shear
     MainWindow w;
     w.setExperiment(config);
     w.resize(1400, 900);
