@@ -456,6 +456,15 @@ void MainWindow::refresh() {
             chartedAtMs_ = nowMs;
         }
     }
+    // The charts follow the live run to the page of its stage (compaction, then the shear
+    // tests) when the stage changes page; the user may pick the other page in between.
+    if (!viewingFile_ && (status.state == RunState::Running || status.state == RunState::Paused)) {
+        const QString page = charts_->pageOfStage(status.progress.stage);
+        if (!page.isEmpty() && page != chartedPage_) {
+            chartedPage_ = page;
+            charts_->showPage(page);
+        }
+    }
     if (status.state != shownState_) {
         shownState_ = status.state;
         updateControls(status.state);

@@ -135,6 +135,7 @@ private:
     std::int64_t chartedAtMs_ = 0;
     std::size_t chartedRows_ = 0;
     RunState shownState_ = RunState::Idle;
+    QString chartedPage_; ///< the charts' page of the live stage last shown
     std::optional<RunFileView> runFile_;
     bool viewingFile_ = false;    ///< the scene shows a run file's checkpoint, not the live run
     bool viewingHistory_ = false; ///< the scene shows a kept snapshot of the live run (hover)
