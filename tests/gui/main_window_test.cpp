@@ -160,6 +160,9 @@ TEST(MainWindow, ParametersAreValidatedBeforeARun) {
 TEST(MainWindow, RunsToTheEndAndWritesScreenshots) {
     Fixture f;
     MainWindow& w = f.window;
+    // Relative, so that the status bar of the screenshot names a folder like the default one.
+    QDir(QStringLiteral("GrainLab runs")).removeRecursively();
+    w.setRunsFolder(QStringLiteral("GrainLab runs"));
     click(w, w.startAction());
     ASSERT_TRUE(waitFor([&] { return f.state() == RunState::Finished; }, 120000))
         << w.controller().status().error;
