@@ -327,6 +327,19 @@ TEST(MainWindow, OpensARunFileAndScrubsItsCheckpoints) {
         EXPECT_EQ(t.test.rfind("small-run.h5: ", 0), 0u) << t.test;
     }
     EXPECT_TRUE(charted);
+    // Its compaction series is on the charts' compaction page, against step.
+    int pressureChart = -1;
+    for (int k = 0; k < w.chartsPanel()->chartCount(); ++k) {
+        if (w.chartsPanel()->definition(k).name == QStringLiteral("compaction_p")) {
+            pressureChart = k;
+        }
+    }
+    ASSERT_GE(pressureChart, 0);
+    const SeriesTable compaction = readSeries(path.toStdString(), "compaction");
+    const auto pressure =
+        w.chartsPanel()->curvePoints(pressureChart, "small-run.h5: compaction", "p");
+    ASSERT_EQ(pressure.size(), static_cast<qsizetype>(compaction.rows.size()));
+    EXPECT_EQ(pressure.back().x(), compaction.rows.back()[compaction.column("step")]);
 
     // Hovering a chart at eps1 = 0.2 % moves the scene to the shear checkpoint nearest to it.
     slider->setValue(slider->maximum());
