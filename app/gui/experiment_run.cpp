@@ -1,12 +1,14 @@
-// See experiment_run.h: the ExperimentRunner adapter. It is also the runner's RunOutput, only to hear
-// of each record (nothing is written): at the shear records the history wants, it builds a
-// snapshot of the scene and keeps it there.
+// See experiment_run.h: the ExperimentRunner adapter. It is also the runner's RunOutput: it hands
+// everything on to the run folder's writer when the run is recorded (RunOutputFolder, the one
+// `grainlab run` uses), and at the shear records the history wants, it builds a snapshot of the
+// scene and keeps it there.
 #include "gui/experiment_run.h"
 
 #include <chrono>
 #include <string>
 #include <vector>
 
+#include "cli/run_output.h"
 #include "gui/snapshot_history.h"
 
 namespace grainlab::ui {
@@ -26,18 +28,36 @@ double wallSeconds() {
 
 class ExperimentRun final : public SteppedRun, private RunOutput {
 public:
-    explicit ExperimentRun(const ExperimentConfig& config) : runner_(config, this) {}
+    explicit ExperimentRun(const ExperimentConfig& config,
+                           std::unique_ptr<RunOutputFolder> folder = nullptr,
+                           std::string folderPath = {})
+        : folder_(std::move(folder)), folderPath_(std::move(folderPath)), runner_(config, this) {}
     ExperimentRun(const ExperimentConfig& config, ResumePoint resume)
         : runner_(config, std::move(resume), this) {}
-    bool advance(std::int64_t maxSteps) override { return runner_.advance(maxSteps); }
+    bool advance(std::int64_t maxSteps) override {
+        const bool more = runner_.advance(maxSteps);
+        if (!more) {
+            folder_.reset(); // the run is complete: its files are closed now, as headless
+        }
+        return more;
+    }
     std::shared_ptr<Snapshot> snapshot() const override {
         return runner_.snapshot(SnapshotMeasures::Later);
     }
     RunProgress progress() const override { return runner_.progress(); }
     void keepRecordSnapshots(SnapshotHistory* history) override { history_ = history; }
+    std::string runFolder() const override { return folderPath_; }
+    void interrupt() override {
+        if (folder_ && !runner_.finished()) {
+            runner_.checkpointNow("interrupted");
+        }
+    }
 
 private:
     void record(const SeriesTable& series) override {
+        if (folder_) {
+            folder_->record(series);
+        }
         if (!history_ || series.stages.empty() || series.stages.back().rfind("shear", 0) != 0) {
             return;
         }
@@ -58,8 +78,22 @@ private:
             costSamples_ = 0;
         }
     }
-    void checkpoint(const std::string&, const SimulationState&, const std::string&) override {}
-    void sample(double, const SimulationState&) override {}
+    void checkpoint(const std::string& name, const SimulationState& state,
+                    const std::string& runnerState) override {
+        if (folder_) {
+            folder_->checkpoint(name, state, runnerState);
+        }
+    }
+    void sample(double pressure, const SimulationState& state) override {
+        if (folder_) {
+            folder_->sample(pressure, state);
+        }
+    }
+    void voidCells(const std::string& name, const VoidCellSet& cells) override {
+        if (folder_) {
+            folder_->voidCells(name, cells);
+        }
+    }
 
     /// The scene now (grains, contacts; the history has the measures computed off this thread),
     /// without the series: the charts draw those from the live snapshot, and a copy in every
@@ -85,6 +119,9 @@ private:
         return s;
     }
 
+    // Declared before the runner, which writes to it from its constructor on.
+    std::unique_ptr<RunOutputFolder> folder_; ///< null when the run is not recorded
+    std::string folderPath_;
     ExperimentRunner runner_;
     SnapshotHistory* history_ = nullptr;
     std::int64_t shearRecords_ = 0; ///< shear records seen, the history's record numbers
@@ -100,6 +137,12 @@ private:
 
 std::unique_ptr<SteppedRun> makeExperimentRun(const ExperimentConfig& config) {
     return std::make_unique<ExperimentRun>(config);
+}
+
+std::unique_ptr<SteppedRun> makeRecordedExperimentRun(const ExperimentConfig& config,
+                                                      const std::string& folder) {
+    auto output = std::make_unique<RunOutputFolder>(folder, config.sourceText, false);
+    return std::make_unique<ExperimentRun>(config, std::move(output), folder);
 }
 
 std::unique_ptr<SteppedRun> makeResumedExperimentRun(const ExperimentConfig& config,

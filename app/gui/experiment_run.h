@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 
 #include "grainlab/experiment.h"
 #include "grainlab/experiment_runner.h"
@@ -27,11 +28,21 @@ public:
     /// ones the history wants; see snapshot_history.h), during advance(). The history
     /// outlives the run. By default a run keeps none.
     virtual void keepRecordSnapshots(SnapshotHistory* history) { (void)history; }
+    /// The run folder this run writes (run.h5, <test>/series.csv), or "" when it writes none.
+    virtual std::string runFolder() const { return {}; }
+    /// The run ends before its last step (Stop, the window closes): a recorded run writes an
+    /// "interrupted" checkpoint, so that `grainlab run --resume` continues it. May throw.
+    virtual void interrupt() {}
 };
 
-/// The experiment runner behind the SteppedRun interface (no output files: the GUI exports on
-/// demand).
+/// The experiment runner behind the SteppedRun interface, writing no files.
 std::unique_ptr<SteppedRun> makeExperimentRun(const ExperimentConfig& config);
+/// The same, writing the run folder `folder` (which must be new or empty: see
+/// window_run_folder.h) exactly as `grainlab run --out folder` does, through the same
+/// RunOutputFolder: run.h5 holding config.sourceText as its experiment, and one series.csv per
+/// test. Call on the thread that will advance the run (it creates the run file).
+std::unique_ptr<SteppedRun> makeRecordedExperimentRun(const ExperimentConfig& config,
+                                                      const std::string& folder);
 /// The same, continuing from a checkpoint of the experiment (e.g. one taken in memory by a
 /// benchmark, so that every timed run starts from the same state).
 std::unique_ptr<SteppedRun> makeResumedExperimentRun(const ExperimentConfig& config,

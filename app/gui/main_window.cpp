@@ -21,6 +21,7 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 
+#include "cli/atomic_file.h"
 #include "grainlab/csv_series.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/ui/charts_panel.h"
@@ -29,6 +30,8 @@
 #include "grainlab/ui/parameters_panel.h"
 #include "grainlab/ui/scene_options_bar.h"
 #include "grainlab/ui/scene_view.h"
+#include "gui/edited_experiment.h"
+#include "gui/window_run_folder.h"
 
 namespace grainlab::ui {
 namespace {
@@ -72,13 +75,13 @@ QString stateName(RunState state) {
 } // namespace
 
 MainWindow::MainWindow(RunMaker maker, QWidget* parent)
-    : QMainWindow(parent), maker_(std::move(maker)),
+    : QMainWindow(parent), maker_(std::move(maker)), runsFolder_(defaultRunsFolder()),
       controller_(std::make_unique<SimulationController>()), scene_(new SceneView),
       sceneOptions_(new SceneOptionsBar(scene_)), charts_(new ChartsPanel),
       inspector_(new InspectorPanel), parameters_(new ParametersPanel), stage_(new QLabel),
       speed_(new QLabel), eta_(new QLabel), cursor_(new QLabel), error_(new QLabel),
-      progress_(new QProgressBar), scrubBar_(new QWidget), scrub_(new QSlider(Qt::Horizontal)),
-      scrubLabel_(new QLabel) {
+      runFolder_(new QLabel), progress_(new QProgressBar), scrubBar_(new QWidget),
+      scrub_(new QSlider(Qt::Horizontal)), scrubLabel_(new QLabel) {
     setWindowTitle(QStringLiteral("GrainLab"));
     // OpenGL draws the grains where the platform has a graphics card; the offscreen platform
     // (tests, CI) and GRAINLAB_NO_OPENGL=1 keep the QPainter view, which draws the same picture.
@@ -127,6 +130,7 @@ MainWindow::MainWindow(RunMaker maker, QWidget* parent)
     progress_->setFormat(QStringLiteral("%p %"));
     error_->setStyleSheet(QStringLiteral("color: #b00020"));
     statusBar()->addWidget(stage_);
+    statusBar()->addWidget(runFolder_);
     statusBar()->addWidget(error_, 1);
     statusBar()->addPermanentWidget(cursor_);
     statusBar()->addPermanentWidget(speed_);
@@ -168,6 +172,11 @@ void MainWindow::buildActions() {
     open_ = new QAction(tr("&Open experiment…"), this);
     open_->setShortcut(QKeySequence::Open);
     connect(open_, &QAction::triggered, this, &MainWindow::openExperimentDialog);
+    saveAs_ = new QAction(tr("&Save experiment as…"), this);
+    saveAs_->setShortcut(QKeySequence::SaveAs);
+    saveAs_->setToolTip(tr("Write the experiment as edited in the Parameters tab to a file that "
+                           "`grainlab run` reads"));
+    connect(saveAs_, &QAction::triggered, this, &MainWindow::saveExperimentDialog);
     start_ = new QAction(tr("Start"), this);
     start_->setShortcut(Qt::Key_F5);
     start_->setToolTip(tr("Start or resume the run (F5)"));
@@ -203,11 +212,18 @@ void MainWindow::buildActions() {
 void MainWindow::buildMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->addAction(open_);
+    file->addAction(saveAs_);
     file->addAction(tr("Open &run file…"), this, &MainWindow::openRunFileDialog);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
     QMenu* run = menuBar()->addMenu(tr("&Run"));
     run->addActions({start_, pause_, step_, stop_});
+    if (!maker_) {
+        run->addSeparator();
+        run->addAction(tr("Write the &next run into…"), this,
+                       &MainWindow::chooseNextRunFolderDialog);
+        run->addAction(tr("&Runs folder…"), this, &MainWindow::chooseRunsFolderDialog);
+    }
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Fit the cell (0 or Home in the scene)"), scene_, &SceneView::fitToCell);
     QMenu* exports = menuBar()->addMenu(tr("&Export"));
@@ -246,20 +262,48 @@ void MainWindow::setExperiment(const ExperimentConfig& config) {
         QStringLiteral("GrainLab — %1%2").arg(QString::fromStdString(config.name), source));
 }
 
-void MainWindow::startRun() {
-    if (controller_->status().state == RunState::Idle ||
-        controller_->status().state == RunState::Failed ||
-        controller_->status().state == RunState::Finished) {
-        if (!parameters_->valid()) {
-            showError(parameters_->problem());
-            return;
-        }
-        if (controller_->status().state == RunState::Finished) {
-            controller_->stop();
-        }
+bool MainWindow::prepareRun() {
+    if (!parameters_->valid()) {
+        showError(parameters_->problem());
+        return false;
+    }
+    if (maker_) {
         const ExperimentConfig config = parameters_->applied();
         RunMaker maker = maker_;
         controller_->setRunFactory([maker, config] { return maker(config); });
+        return true;
+    }
+    // The run is what the edited text says, read back by the experiment-file reader: the run
+    // file stores that text, and `grainlab run` on it (or --resume) runs the same experiment.
+    ExperimentConfig config;
+    try {
+        config = editedExperiment(experiment_, parameters_->applied(), experiment_.sourcePath);
+    } catch (const std::exception& e) {
+        showError(tr("Cannot start: %1").arg(QString::fromStdString(e.what())));
+        return false;
+    }
+    const bool picked = !nextRunFolder_.isEmpty();
+    const QString folder = picked ? nextRunFolder_
+                                  : datedRunFolder(runsFolder_, QString::fromStdString(config.name),
+                                                   QDateTime::currentDateTime());
+    nextRunFolder_.clear();
+    const std::string path = QDir::cleanPath(folder).toStdString();
+    // Called on the worker thread: the folder is claimed and the run file created there.
+    controller_->setRunFactory([config, path, picked] {
+        return makeRecordedExperimentRun(config, claimRunFolder(path, !picked));
+    });
+    return true;
+}
+
+void MainWindow::startRun() {
+    const RunState state = controller_->status().state;
+    if (state == RunState::Idle || state == RunState::Failed || state == RunState::Finished) {
+        if (state == RunState::Finished) {
+            controller_->stop();
+        }
+        if (!prepareRun()) {
+            return;
+        }
     }
     error_->clear();
     viewingFile_ = false;
@@ -272,15 +316,11 @@ void MainWindow::pauseRun() {
 }
 
 void MainWindow::stepRun() {
-    if (controller_->status().state == RunState::Idle ||
-        controller_->status().state == RunState::Failed) {
-        if (!parameters_->valid()) {
-            showError(parameters_->problem());
+    const RunState state = controller_->status().state;
+    if (state == RunState::Idle || state == RunState::Failed) {
+        if (!prepareRun()) {
             return;
         }
-        const ExperimentConfig config = parameters_->applied();
-        RunMaker maker = maker_;
-        controller_->setRunFactory([maker, config] { return maker(config); });
     }
     viewingFile_ = false;
     controller_->step(stepSize_->value());
@@ -288,6 +328,90 @@ void MainWindow::stepRun() {
 
 void MainWindow::stopRun() {
     controller_->stop();
+}
+
+void MainWindow::setRunsFolder(const QString& folder) {
+    runsFolder_ = QDir::cleanPath(folder);
+    refresh();
+}
+
+void MainWindow::setNextRunFolder(const QString& folder) {
+    nextRunFolder_ = QDir::cleanPath(folder);
+    refresh();
+}
+
+QString MainWindow::runFolder() const {
+    return QString::fromStdString(controller_->status().runFolder);
+}
+
+QString MainWindow::editedExperimentText(QString* error) const {
+    try {
+        if (!parameters_->valid()) {
+            throw std::runtime_error(parameters_->problem().toStdString());
+        }
+        const ExperimentConfig edited =
+            editedExperiment(experiment_, parameters_->applied(), experiment_.sourcePath);
+        return QString::fromStdString(edited.sourceText);
+    } catch (const std::exception& e) {
+        if (error) {
+            *error = QString::fromStdString(e.what());
+        }
+        return {};
+    }
+}
+
+bool MainWindow::saveExperimentAs(const QString& path, QString* error) {
+    QString why;
+    const QString text = editedExperimentText(&why);
+    if (text.isEmpty()) {
+        if (error) {
+            *error = tr("Save experiment: %1").arg(why);
+        }
+        return false;
+    }
+    try {
+        writeFileAtomically(path.toStdString(), text.toStdString());
+    } catch (const std::exception& e) {
+        if (error) {
+            *error = QString::fromStdString(e.what());
+        }
+        return false;
+    }
+    return true;
+}
+
+void MainWindow::saveExperimentDialog() {
+    const QFileInfo source(QString::fromStdString(experiment_.sourcePath));
+    const QString suggested =
+        (source.fileName().isEmpty() ? QDir::current() : source.dir())
+            .filePath(QString::fromStdString(experiment_.name) + QStringLiteral("-edited.json"));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save experiment as"), suggested,
+                                                      tr("Experiment files (*.json)"));
+    if (path.isEmpty()) {
+        return;
+    }
+    QString error;
+    if (!saveExperimentAs(path, &error)) {
+        showError(error);
+    } else {
+        statusBar()->showMessage(tr("Experiment saved to %1").arg(path), 8000);
+    }
+}
+
+void MainWindow::chooseRunsFolderDialog() {
+    const QString folder = QFileDialog::getExistingDirectory(
+        this, tr("Each run gets a new dated folder inside"), runsFolder_);
+    if (!folder.isEmpty()) {
+        setRunsFolder(folder);
+    }
+}
+
+void MainWindow::chooseNextRunFolderDialog() {
+    const QString folder = QFileDialog::getExistingDirectory(
+        this, tr("Write the next run into (a new or empty folder)"), runsFolder_);
+    if (!folder.isEmpty()) {
+        setNextRunFolder(folder);
+    }
 }
 
 void MainWindow::showError(const QString& message) {
@@ -332,6 +456,15 @@ void MainWindow::refresh() {
             chartedAtMs_ = nowMs;
         }
     }
+    // The charts follow the live run to the page of its stage (compaction, then the shear
+    // tests) when the stage changes page; the user may pick the other page in between.
+    if (!viewingFile_ && (status.state == RunState::Running || status.state == RunState::Paused)) {
+        const QString page = charts_->pageOfStage(status.progress.stage);
+        if (!page.isEmpty() && page != chartedPage_) {
+            chartedPage_ = page;
+            charts_->showPage(page);
+        }
+    }
     if (status.state != shownState_) {
         shownState_ = status.state;
         updateControls(status.state);
@@ -350,6 +483,23 @@ void MainWindow::refresh() {
                         .arg(status.stepsPerSecond, 0, 'f', 0)
                         .arg(100.0 * status.strainPerSecond, 0, 'g', 3));
     progress_->setValue(static_cast<int>(1000.0 * std::clamp(status.progress.fraction, 0.0, 1.0)));
+    if (!status.runFolder.empty()) {
+        const QString folder = QString::fromStdString(status.runFolder);
+        runFolder_->setText(tr("run folder: %1").arg(QDir::toNativeSeparators(folder)));
+        runFolder_->setToolTip(
+            tr("This run writes run.h5 and one series.csv per test here; reopen run.h5 with File "
+               "› Open run file, or continue it with: grainlab run --resume \"%1\"")
+                .arg(folder));
+    } else if (!maker_) {
+        const QString next =
+            nextRunFolder_.isEmpty()
+                ? tr("runs are written under %1").arg(QDir::toNativeSeparators(runsFolder_))
+                : tr("the next run is written into %1")
+                      .arg(QDir::toNativeSeparators(nextRunFolder_));
+        runFolder_->setText(next);
+        runFolder_->setToolTip(tr("Change with Run › Runs folder… or Run › Write the next run "
+                                  "into…"));
+    }
     eta_->setText(tr("ETA %1").arg(status.state == RunState::Running
                                        ? formatDuration(status.etaSeconds)
                                        : QStringLiteral("–")));
@@ -462,8 +612,8 @@ void MainWindow::showRunFileCheckpoint(int index) {
 }
 
 void MainWindow::openRunFileDialog() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open run file"), QString(), tr("Run files (*.h5)"));
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open run file"), runsFolder_,
+                                                      tr("Run files (*.h5)"));
     QString error;
     if (!path.isEmpty() && !openRunFile(path, &error)) {
         showError(error);

@@ -4,7 +4,10 @@
 // controller. It computes nothing itself: a 33 ms timer picks the controller's newest snapshot
 // and hands it to the panels (charts at most every 150 ms while running). Hovering a chart shows
 // that moment in the scene: a run file's nearest checkpoint, or the live run's nearest kept
-// snapshot (the controller's history) until the hover ends. GUI thread only.
+// snapshot (the controller's history) until the hover ends. A run started here is recorded: it
+// writes a run folder as `grainlab run` does (window_run_folder.h says where), holding the
+// experiment as edited in the Parameters tab (edited_experiment.h), which Save experiment as…
+// writes too. GUI thread only; the run folder is written on the controller's worker thread.
 
 #include <functional>
 #include <memory>
@@ -40,7 +43,9 @@ public:
     /// Makes the run for an experiment when Start or Step is pressed with no run.
     using RunMaker = std::function<std::unique_ptr<SteppedRun>(const ExperimentConfig&)>;
 
-    explicit MainWindow(RunMaker maker = makeExperimentRun, QWidget* parent = nullptr);
+    /// Without a maker (the app), each run is the experiment runner writing a new run folder;
+    /// a maker's runs (benchmarks, scripted tests) are its own and write nothing.
+    explicit MainWindow(RunMaker maker = {}, QWidget* parent = nullptr);
     ~MainWindow() override;
 
     /// Reads an experiment file and shows its parameters (stops a current run). Returns false
@@ -54,6 +59,19 @@ public:
     void showRunFileCheckpoint(int index);
     /// True while the scene shows a kept snapshot of the live run (a chart is hovered).
     bool showsLiveHistory() const { return viewingHistory_; }
+
+    /// The folder under which each run gets a new dated folder (default: defaultRunsFolder()).
+    void setRunsFolder(const QString& folder);
+    QString runsFolder() const { return runsFolder_; }
+    /// The next run writes into `folder` instead (which must be new or empty), once.
+    void setNextRunFolder(const QString& folder);
+    /// The folder of the current (or last) run, "" before the first recorded run.
+    QString runFolder() const;
+    /// The experiment as edited in the Parameters tab, as experiment-file text (what Save
+    /// experiment as… writes and a run records). Empty, with `error` set, when it cannot be.
+    QString editedExperimentText(QString* error = nullptr) const;
+    /// Writes editedExperimentText() to `path`. Returns false and sets `error` on failure.
+    bool saveExperimentAs(const QString& path, QString* error = nullptr);
 
     /// Takes the newest snapshot and status from the controller now (what the timer does).
     void refresh();
@@ -71,6 +89,9 @@ public:
     QAction* pauseAction() const { return pause_; }
     QAction* stepAction() const { return step_; }
     QAction* stopAction() const { return stop_; }
+    QAction* saveExperimentAction() const { return saveAs_; }
+    /// The status bar's note of where runs are written.
+    QLabel* runFolderLabel() const { return runFolder_; }
     QSpinBox* stepSizeEdit() const { return stepSize_; }
     QLabel* speedLabel() const { return speed_; }
     QProgressBar* progressBar() const { return progress_; }
@@ -86,6 +107,12 @@ private:
     void buildActions();
     void buildMenus();
     void updateControls(RunState state);
+    /// Gives the controller the run Start or Step begins; false (and says why) when the edited
+    /// parameters cannot make one.
+    bool prepareRun();
+    void saveExperimentDialog();
+    void chooseRunsFolderDialog();
+    void chooseNextRunFolderDialog();
     void openExperimentDialog();
     void exportSceneDialog();
     void exportChartDialog(int chart);
@@ -101,11 +128,14 @@ private:
 
     RunMaker maker_;
     ExperimentConfig experiment_;
+    QString runsFolder_;
+    QString nextRunFolder_;
     std::unique_ptr<SimulationController> controller_;
     SnapshotPtr shown_;
     std::int64_t chartedAtMs_ = 0;
     std::size_t chartedRows_ = 0;
     RunState shownState_ = RunState::Idle;
+    QString chartedPage_; ///< the charts' page of the live stage last shown
     std::optional<RunFileView> runFile_;
     bool viewingFile_ = false;    ///< the scene shows a run file's checkpoint, not the live run
     bool viewingHistory_ = false; ///< the scene shows a kept snapshot of the live run (hover)
@@ -122,12 +152,14 @@ private:
     QAction* pause_ = nullptr;
     QAction* step_ = nullptr;
     QAction* stop_ = nullptr;
+    QAction* saveAs_ = nullptr;
     QSpinBox* stepSize_ = nullptr;
     QLabel* stage_;
     QLabel* speed_;
     QLabel* eta_;
     QLabel* cursor_;
     QLabel* error_;
+    QLabel* runFolder_;
     QProgressBar* progress_;
     QWidget* scrubBar_;
     QSlider* scrub_;

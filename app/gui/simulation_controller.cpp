@@ -116,11 +116,25 @@ bool SimulationController::ensureRun() {
     history_.clear();
     run_ = factory();
     run_->keepRecordSnapshots(&history_);
+    {
+        std::lock_guard lock(mutex_);
+        status_.runFolder = run_->runFolder();
+        status_.progress = run_->progress(); // not the previous run's
+    }
     lastRateTime_ = wallSeconds();
     lastRateSteps_ = 0;
     lastRateStrain_ = run_->progress().axialStrain;
     lastRateFraction_ = run_->progress().fraction;
     return true;
+}
+
+void SimulationController::endRun() {
+    running_ = false;
+    if (!run_) {
+        return;
+    }
+    std::unique_ptr<SteppedRun> run = std::move(run_);
+    run->interrupt();
 }
 
 void SimulationController::publish(RunState state) {
@@ -193,6 +207,13 @@ void SimulationController::workerLoop() {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [this] { return quit_ || !commands_.empty() || running_; });
             if (quit_) {
+                lock.unlock();
+                try {
+                    endRun();
+                } catch (const std::exception&) {
+                    // The window is closing: nobody is left to tell; the run file keeps its
+                    // last complete checkpoint.
+                }
                 break;
             }
             commands.swap(commands_);
@@ -228,8 +249,7 @@ void SimulationController::workerLoop() {
                     }
                     break;
                 case CommandKind::Stop:
-                    running_ = false;
-                    run_.reset();
+                    endRun();
                     setState(RunState::Idle);
                     break;
                 }

@@ -49,6 +49,7 @@ struct RunStatus {
     double measureSeconds = 0;      ///< the finisher's time for the last snapshot's measures [s]
     std::uint64_t publications = 0; ///< snapshots published so far
     std::string error;              ///< why the run failed
+    std::string runFolder;          ///< the folder the current (or last) run writes, or ""
 };
 
 class SimulationController : public QObject {
@@ -66,7 +67,9 @@ public:
     void pause();
     /// Advances `steps` steps then stays paused (creates the run if needed).
     void step(std::int64_t steps = 1);
-    /// Ends the run; the next start() begins a new one. The last snapshot stays published.
+    /// Ends the run; the next start() begins a new one. The last snapshot stays published. A
+    /// recorded run that had not finished writes an "interrupted" checkpoint first (on the
+    /// worker thread), as it does when the controller is destroyed.
     void stop();
 
     SnapshotPtr latestSnapshot() const;
@@ -89,6 +92,8 @@ private:
     void post(Command command);
     void workerLoop();
     bool ensureRun();
+    /// Ends run_ on the worker thread: the interrupted checkpoint of a recorded run, then reset.
+    void endRun();
     void publish(RunState state);
     void setState(RunState state, const std::string& error = {});
 

@@ -433,20 +433,54 @@ struct ExperimentRunner::Impl {
     }
 
     double fraction() const {
-        // Weights: a compaction stage 1, an equilibration 0.2, a shear 3 (rough cost ratios).
-        const double nc = double(config.compaction.pressures.size());
-        const double ns = double(config.shear.pressures.size());
-        const double total = nc + ns * 3.2;
+        // Of the experiment's expected steps. A function of the stage and the steps taken in it
+        // only (no history), so it never decreases while the run goes on, and a resumed run
+        // reports what the uninterrupted one did at the same step. Each stage weighs its
+        // expected steps: a shear exactly its stride to the target strain (and moves linearly);
+        // an equilibration two calm windows; a compaction stage a settling time (the first,
+        // from the loose grid, 0.1 s of simulated time, each further one 0.01 s: the quick
+        // run's stages take 0.12 s, then 0.018, 0.006, 0.007 s), approached as 1 - exp(-s / C)
+        // so that a longer stage creeps on rather than stalls, and completed when it ends.
+        const double dt = config.parameters.timeStep;
+        // Whole numbers of steps: the sums of the weights are exact, so the stage boundaries
+        // cannot round backwards.
+        const auto capped = [](double expected, std::int64_t maxSteps) {
+            return std::round(std::clamp(expected, 1.0, std::max(1.0, double(maxSteps))));
+        };
+        const EquilibriumCriterion& compactionCriterion = config.compaction.criterion;
+        const auto compactionWeight = [&](int k) {
+            return capped((k == 0 ? 0.1 : 0.01) / dt, compactionCriterion.maxSteps);
+        };
+        const EquilibriumCriterion& eq = config.shear.equilibration;
+        const double equilibrationWeight =
+            capped(2.0 * double(eq.calmChecks) * double(eq.checkInterval), eq.maxSteps);
+        const double shearWeight = double(strideOf(config.shear.targetAxialStrain));
+        const int nc = int(config.compaction.pressures.size());
+        const int ns = int(config.shear.pressures.size());
+        double compactionTotal = 0;
+        for (int k = 0; k < nc; ++k) {
+            compactionTotal += compactionWeight(k);
+        }
+        const double testWeight = equilibrationWeight + shearWeight;
+        const double total = compactionTotal + ns * testWeight;
+        const double inStage = std::max(0.0, double(sim->stepCount() - stageStartStep));
+        const auto settling = [](double steps, double weight) {
+            return weight * -std::expm1(-steps / weight); // < weight for every finite step count
+        };
         double done = 0;
         switch (phase) {
         case Phase::Compaction:
-            done = index + std::min(1.0, double(calm) / criterion().calmChecks) * 0.5;
+            for (int k = 0; k < index; ++k) {
+                done += compactionWeight(k);
+            }
+            done += settling(inStage, compactionWeight(index));
             break;
         case Phase::Equilibration:
-            done = nc + index * 3.2 + 0.1;
+            done = compactionTotal + index * testWeight + settling(inStage, equilibrationWeight);
             break;
         case Phase::Shear:
-            done = nc + index * 3.2 + 0.2 + 3.0 * std::clamp(eps1() / config.shear.targetAxialStrain, 0.0, 1.0);
+            done = compactionTotal + index * testWeight + equilibrationWeight +
+                   std::min(inStage, shearWeight);
             break;
         case Phase::Done:
             done = total;

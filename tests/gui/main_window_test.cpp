@@ -29,42 +29,14 @@
 #include "grainlab/ui/scene_options_bar.h"
 #include "grainlab/ui/scene_view.h"
 #include "gui/main_window.h"
+#include "window_test_support.h"
 
 namespace grainlab::ui {
 namespace {
 
-ExperimentConfig smallExperiment() {
-    ExperimentConfig c =
-        readExperimentFile(GRAINLAB_SOURCE_DIR "/resources/experiments/quick.json");
-    c.assembly.grainCount = 120;
-    c.compaction.pressures = {15e3};
-    c.shear.pressures = {15e3};
-    c.shear.targetAxialStrain = 0.005;
-    c.parameters.threads = 1;
-    return c;
-}
-
-template <class Predicate>
-bool waitFor(Predicate done, int timeoutMs = 60000) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
-    while (!done()) {
-        if (std::chrono::steady_clock::now() > end) {
-            return false;
-        }
-        QTest::qWait(10);
-    }
-    return true;
-}
-
-/// Clicks the toolbar button of an action, like a user.
-void click(MainWindow& w, QAction* action) {
-    QToolBar* bar = w.findChild<QToolBar*>(QStringLiteral("runToolBar"));
-    ASSERT_NE(bar, nullptr);
-    QWidget* button = bar->widgetForAction(action);
-    ASSERT_NE(button, nullptr);
-    ASSERT_TRUE(button->isEnabled()) << action->text().toStdString();
-    QTest::mouseClick(button, Qt::LeftButton);
-}
+using window_tests::click;
+using window_tests::smallExperiment;
+using window_tests::waitFor;
 
 struct Fixture {
     MainWindow window;
@@ -188,6 +160,9 @@ TEST(MainWindow, ParametersAreValidatedBeforeARun) {
 TEST(MainWindow, RunsToTheEndAndWritesScreenshots) {
     Fixture f;
     MainWindow& w = f.window;
+    // Relative, so that the status bar of the screenshot names a folder like the default one.
+    QDir(QStringLiteral("GrainLab runs")).removeRecursively();
+    w.setRunsFolder(QStringLiteral("GrainLab runs"));
     click(w, w.startAction());
     ASSERT_TRUE(waitFor([&] { return f.state() == RunState::Finished; }, 120000))
         << w.controller().status().error;
@@ -228,8 +203,7 @@ TEST(MainWindow, RunsToTheEndAndWritesScreenshots) {
 }
 
 TEST(MainWindow, HoveringAChartShowsTheLiveRunsKeptSnapshotUntilTheHoverEnds) {
-    ExperimentConfig config = smallExperiment();
-    config.shear.targetAxialStrain = 0.02; // long enough to pause during the shear
+    const ExperimentConfig config = smallExperiment(0.02); // long enough to pause during the shear
     MainWindow w;
     w.setExperiment(config);
     w.resize(1400, 900);
@@ -353,6 +327,19 @@ TEST(MainWindow, OpensARunFileAndScrubsItsCheckpoints) {
         EXPECT_EQ(t.test.rfind("small-run.h5: ", 0), 0u) << t.test;
     }
     EXPECT_TRUE(charted);
+    // Its compaction series is on the charts' compaction page, against step.
+    int pressureChart = -1;
+    for (int k = 0; k < w.chartsPanel()->chartCount(); ++k) {
+        if (w.chartsPanel()->definition(k).name == QStringLiteral("compaction_p")) {
+            pressureChart = k;
+        }
+    }
+    ASSERT_GE(pressureChart, 0);
+    const SeriesTable compaction = readSeries(path.toStdString(), "compaction");
+    const auto pressure =
+        w.chartsPanel()->curvePoints(pressureChart, "small-run.h5: compaction", "p");
+    ASSERT_EQ(pressure.size(), static_cast<qsizetype>(compaction.rows.size()));
+    EXPECT_EQ(pressure.back().x(), compaction.rows.back()[compaction.column("step")]);
 
     // Hovering a chart at eps1 = 0.2 % moves the scene to the shear checkpoint nearest to it.
     slider->setValue(slider->maximum());

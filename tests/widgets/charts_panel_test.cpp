@@ -31,7 +31,7 @@ TEST(ChartsPanel, OverlaysTestsInTheirColoursInDisplayUnits) {
     const std::vector<SeriesTable> tables{testing::makeSeries("p15kPa", 200, 0.5),
                                           testing::makeSeries("p100kPa", 150, 0.4)};
     panel.setSeries(tables);
-    ASSERT_EQ(panel.chartCount(), 6);
+    ASSERT_EQ(panel.chartCount(), 10); // six of the shear tests, four of the compaction
     const int q = chartIndex(panel, QStringLiteral("q_over_p"));
     const int v = chartIndex(panel, QStringLiteral("epsv"));
     const int f = chartIndex(panel, QStringLiteral("fabric"));
@@ -72,6 +72,58 @@ TEST(ChartsPanel, ShearOnlySkipsCompactionRows) {
     panel.setShearOnly(false);
     panel.setSeries({t});
     EXPECT_EQ(panel.curvePoints(0, "p50kPa", "q_over_p").size(), 10);
+}
+
+TEST(ChartsPanel, ChartsTheCompactionAgainstStepOnItsOwnPage) {
+    ChartsPanel panel;
+    panel.resize(900, 900);
+    panel.show();
+    const SeriesTable compaction = testing::makeCompactionSeries(40);
+    panel.setSeries({compaction, testing::makeSeries("p015kPa", 50, 0.5)});
+    ASSERT_EQ(panel.pages(),
+              (QStringList{QStringLiteral("Shear tests"), QStringLiteral("Compaction")}));
+    EXPECT_EQ(panel.pageOfStage("compaction 15 kPa"), QStringLiteral("Compaction"));
+    EXPECT_EQ(panel.pageOfStage("shear 15 kPa"), QStringLiteral("Shear tests"));
+    const int p = chartIndex(panel, QStringLiteral("compaction_p"));
+    const int e = chartIndex(panel, QStringLiteral("compaction_e"));
+    const int z = chartIndex(panel, QStringLiteral("compaction_Z"));
+    const int iuf = chartIndex(panel, QStringLiteral("compaction_I_uf"));
+    ASSERT_GE(p, 0);
+    ASSERT_GE(e, 0);
+    ASSERT_GE(z, 0);
+    ASSERT_GE(iuf, 0);
+    // Every compaction row, against step, p in kPa.
+    const auto pressure = panel.curvePoints(p, "compaction", "p");
+    ASSERT_EQ(pressure.size(), 40);
+    EXPECT_EQ(pressure.back().x(), compaction.rows.back()[0]);
+    EXPECT_DOUBLE_EQ(pressure.back().y(), 1e-3 * compaction.rows.back()[2]);
+    EXPECT_EQ(panel.curvePoints(e, "compaction", "e").size(), 40);
+    EXPECT_EQ(panel.curvePoints(z, "compaction", "Z").size(), 40);
+    EXPECT_DOUBLE_EQ(panel.curvePoints(iuf, "compaction", "I_uf").front().y(),
+                     compaction.rows.front()[5]);
+    EXPECT_EQ(panel.chartView(p)->chart()->series().size(), 1); // the shear test is not here
+    // The shear charts draw the shear test only (the compaction's rows are no shear rows).
+    EXPECT_TRUE(panel.curvePoints(0, "compaction", "q_over_p").isEmpty());
+    EXPECT_EQ(panel.curvePoints(0, "p015kPa", "q_over_p").size(), 50);
+
+    // Drawn: the compaction page's p chart shows the test's colour.
+    panel.showPage(QStringLiteral("Compaction"));
+    EXPECT_EQ(panel.currentPage(), QStringLiteral("Compaction"));
+    QTest::qWait(20);
+    EXPECT_TRUE(panel.chartView(p)->isVisible());
+    EXPECT_FALSE(panel.chartView(0)->isVisible());
+    const QImage image = panel.chartView(p)->grab().toImage();
+    const QColor colour = panel.testColour("compaction");
+    int coloured = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            coloured += std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
+                            std::abs(c.blue() - colour.blue()) <
+                        40;
+        }
+    }
+    EXPECT_GT(coloured, 200);
 }
 
 TEST(ChartsPanel, HoverReportsAxialStrainAndMarksEveryStrainChart) {

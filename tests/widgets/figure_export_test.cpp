@@ -31,6 +31,7 @@ TEST(FigureExport, FigureSetWritesValidFilesOfTheRightSize) {
     for (auto& r : series[0].rows) {
         r.insert(r.begin(), 1.0);
     }
+    series.push_back(testing::makeCompactionSeries(60)); // for the compaction charts
     charts.setSeries(series);
     FigureSetOptions options;
     options.sceneSize = QSize(640, 640);
@@ -38,7 +39,7 @@ TEST(FigureExport, FigureSetWritesValidFilesOfTheRightSize) {
     QString error;
     const QStringList files = exportFigureSet(dir.path(), &scene, &charts, series, options, &error);
     EXPECT_TRUE(error.isEmpty()) << error.toStdString();
-    ASSERT_EQ(files.size(), 3 * (1 + charts.chartCount()) + 2);
+    ASSERT_EQ(files.size(), 3 * (1 + charts.chartCount()) + 3);
     for (const QString& file : files) {
         ASSERT_TRUE(QFile::exists(file)) << file.toStdString();
         EXPECT_GT(QFileInfo(file).size(), 200) << file.toStdString();

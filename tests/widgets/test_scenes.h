@@ -72,4 +72,22 @@ inline SeriesTable makeSeries(const std::string& name, int rows, double peak) {
     return t;
 }
 
+/// A compaction series as the runner records it: step, p, e, Z, I_uf (and eps1, 0 throughout),
+/// two stages.
+inline SeriesTable makeCompactionSeries(int rows) {
+    SeriesTable t;
+    t.test = "compaction";
+    for (const char* column : {"step", "eps1", "p", "e", "Z", "I_uf"}) {
+        t.columns.push_back({column, "-"});
+    }
+    for (int k = 0; k < rows; ++k) {
+        const double s = 1000.0 * (k + 1);
+        t.rows.push_back({s, 0.0, 15e3 * (1.0 - std::exp(-k / 10.0)) + (k > rows / 2 ? 10e3 : 0.0),
+                          0.4 - 0.1 * std::exp(-k / 10.0), 3.5 * (1.0 - std::exp(-k / 5.0)),
+                          50.0 * std::exp(-k / 8.0)});
+        t.stages.push_back(k > rows / 2 ? "compaction 25 kPa" : "compaction 15 kPa");
+    }
+    return t;
+}
+
 } // namespace grainlab::testing

@@ -10,7 +10,9 @@
 #include <QGridLayout>
 #include <QLegendMarker>
 #include <QMouseEvent>
+#include <QTabWidget>
 #include <QTimer>
+#include <QVBoxLayout>
 #include <QValueAxis>
 
 #include "grainlab/ui/colour_maps.h"
@@ -20,6 +22,7 @@ namespace grainlab::ui {
 
 std::vector<ChartDefinition> defaultChartDefinitions() {
     const QString eps1 = QStringLiteral("ε1 [%]");
+    const QString compaction = QObject::tr("Compaction");
     return {
         {"q_over_p",
          QObject::tr("Stress ratio"),
@@ -67,6 +70,42 @@ std::vector<ChartDefinition> defaultChartDefinitions() {
          1.0,
          QStringLiteral("Z̄ [-]"),
          {{"Z_eff", QStringLiteral("Z̄"), 1.0, Qt::SolidLine}}},
+        {"compaction_p",
+         QObject::tr("Compaction: mean stress"),
+         "step",
+         QStringLiteral("step"),
+         1.0,
+         QStringLiteral("p [kPa]"),
+         {{"p", QStringLiteral("p"), 1e-3, Qt::SolidLine}},
+         "compaction",
+         compaction},
+        {"compaction_e",
+         QObject::tr("Compaction: void ratio"),
+         "step",
+         QStringLiteral("step"),
+         1.0,
+         QStringLiteral("e [-]"),
+         {{"e", QStringLiteral("e"), 1.0, Qt::SolidLine}},
+         "compaction",
+         compaction},
+        {"compaction_Z",
+         QObject::tr("Compaction: coordination"),
+         "step",
+         QStringLiteral("step"),
+         1.0,
+         QStringLiteral("Z [-]"),
+         {{"Z", QStringLiteral("Z"), 1.0, Qt::SolidLine}},
+         "compaction",
+         compaction},
+        {"compaction_I_uf",
+         QObject::tr("Compaction: unbalanced force"),
+         "step",
+         QStringLiteral("step"),
+         1.0,
+         QStringLiteral("I_uf [%]"),
+         {{"I_uf", QStringLiteral("I_uf"), 1.0, Qt::SolidLine}},
+         "compaction",
+         compaction},
     };
 }
 
@@ -155,11 +194,23 @@ void HoverChartView::drawForeground(QPainter* painter, const QRectF& rect) {
 
 ChartsPanel::ChartsPanel(QWidget* parent, std::vector<ChartDefinition> charts)
     : QWidget(parent), definitions_(std::move(charts)) {
-    auto* grid = new QGridLayout(this);
-    grid->setContentsMargins(0, 0, 0, 0);
-    grid->setSpacing(2);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    tabs_ = new QTabWidget(this);
+    tabs_->setDocumentMode(true);
+    layout->addWidget(tabs_);
+    std::map<QString, std::pair<QGridLayout*, int>> grids; // page -> its grid, charts on it
     for (std::size_t k = 0; k < definitions_.size(); ++k) {
         const ChartDefinition& d = definitions_[k];
+        auto& [grid, placed] = grids[d.page];
+        if (!grid) {
+            auto* page = new QWidget;
+            page->setObjectName(d.page);
+            grid = new QGridLayout(page);
+            grid->setContentsMargins(0, 0, 0, 0);
+            grid->setSpacing(2);
+            tabs_->addTab(page, d.page);
+        }
         auto* chart = new QChart();
         chart->setTitle(d.title);
         chart->layout()->setContentsMargins(0, 0, 0, 0);
@@ -199,8 +250,46 @@ ChartsPanel::ChartsPanel(QWidget* parent, std::vector<ChartDefinition> charts)
         });
         view->setProperty("eps1", againstAxialStrain);
         views_.push_back(view);
-        grid->addWidget(view, static_cast<int>(k) / 2, static_cast<int>(k) % 2);
+        grid->addWidget(view, placed / 2, placed % 2);
+        ++placed;
     }
+    // Only one page is shown: the others' charts get their size when shown.
+    connect(tabs_, &QTabWidget::currentChanged, this, [this] {
+        QTimer::singleShot(0, this, [this] {
+            for (int k = 0; k < chartCount(); ++k) {
+                rescale(k);
+            }
+        });
+    });
+}
+
+QStringList ChartsPanel::pages() const {
+    QStringList out;
+    for (int i = 0; i < tabs_->count(); ++i) {
+        out << tabs_->tabText(i);
+    }
+    return out;
+}
+
+void ChartsPanel::showPage(const QString& page) {
+    for (int i = 0; i < tabs_->count(); ++i) {
+        if (tabs_->tabText(i) == page) {
+            tabs_->setCurrentIndex(i);
+        }
+    }
+}
+
+QString ChartsPanel::pageOfStage(const std::string& stage) const {
+    for (const ChartDefinition& d : definitions_) {
+        if (stage.rfind(d.stage, 0) == 0) {
+            return d.page;
+        }
+    }
+    return {};
+}
+
+QString ChartsPanel::currentPage() const {
+    return tabs_->tabText(tabs_->currentIndex());
 }
 
 void ChartsPanel::setShearOnly(bool shearOnly) {
@@ -222,16 +311,25 @@ void ChartsPanel::setSeries(const std::vector<SeriesTable>& tables) {
             testColours_[table.test] = next;
         }
         const QColor colour = testColour(table.test);
-        // Rows to plot.
-        std::vector<std::size_t> rows;
-        for (std::size_t r = 0; r < table.rows.size(); ++r) {
-            const bool shear = r < table.stages.size() && table.stages[r].rfind("shear", 0) == 0;
-            if (!shearOnly_ || shear) {
-                rows.push_back(r);
+        // Rows to plot, per stage the charts draw.
+        std::map<std::string, std::vector<std::size_t>> rowsOf;
+        for (std::size_t k = 0; k < definitions_.size(); ++k) {
+            const ChartDefinition& d = definitions_[k];
+            if (rowsOf.count(d.stage)) {
+                continue;
+            }
+            std::vector<std::size_t>& rows = rowsOf[d.stage];
+            for (std::size_t r = 0; r < table.rows.size(); ++r) {
+                const bool inStage =
+                    r < table.stages.size() && table.stages[r].rfind(d.stage, 0) == 0;
+                if (!shearOnly_ || inStage) {
+                    rows.push_back(r);
+                }
             }
         }
         for (std::size_t k = 0; k < definitions_.size(); ++k) {
             const ChartDefinition& d = definitions_[k];
+            const std::vector<std::size_t>& rows = rowsOf[d.stage];
             const int xc = table.column(d.xColumn);
             if (xc < 0 || rows.empty()) {
                 continue;

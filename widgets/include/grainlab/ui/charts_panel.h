@@ -1,7 +1,10 @@
 #pragma once
-// Live charts of the recorded series (Qt Charts): q/p and volumetric strain against axial
-// strain, fabric anisotropy H11 - H22 of all / strong / weak contacts, coordination Z, Z_eff and
-// sliding index S, void-cell count N_v/N_vi, and Z_eff against N_v/N_vi. Several tests overlay
+// Live charts of the recorded series (Qt Charts), on two pages. "Shear tests": q/p and volumetric
+// strain against axial strain, fabric anisotropy H11 - H22 of all / strong / weak contacts,
+// coordination Z, Z_eff and sliding index S, void-cell count N_v/N_vi, and Z_eff against
+// N_v/N_vi, drawn from the rows recorded during shear. "Compaction": mean stress p, void ratio e,
+// coordination Z and unbalanced-force index I_uf against step, drawn from the rows recorded
+// during compaction (the compaction series). Several tests overlay
 // in one chart, one colour per test, one line style per quantity. Column names are the CSV
 // contract of SPEC §4. Hovering a chart marks the point under the cursor and reports its eps1,
 // and reports when the hover ends (the cursor leaves the plot area).
@@ -19,6 +22,8 @@
 #include <QWidget>
 
 #include "grainlab/series.h"
+
+class QTabWidget;
 
 namespace grainlab::ui {
 
@@ -38,9 +43,13 @@ struct ChartDefinition {
     double xScale = 1.0; ///< display factor of x
     QString yLabel;      ///< with unit
     std::vector<ChartCurve> curves;
+    /// The rows drawn: those whose stage starts with this ("shear", "compaction").
+    std::string stage = "shear";
+    /// The page the chart is on (charts of one page share a grid).
+    QString page = QObject::tr("Shear tests");
 };
 
-/// The six charts of the issue, in display order.
+/// The charts in display order: the six of the shear tests, then the four of the compaction.
 std::vector<ChartDefinition> defaultChartDefinitions();
 
 /// A chart view that shows a vertical marker and the values under the cursor.
@@ -76,8 +85,17 @@ public:
     /// Shows these tables (every test: live and loaded). A table's curves are updated only when
     /// its row count changed. Tests no longer present are removed.
     void setSeries(const std::vector<SeriesTable>& tables);
-    /// Plot only the rows recorded during shear (stage starting with "shear"); default true.
+    /// Plot only the rows of each chart's stage (ChartDefinition::stage); default true. False
+    /// plots every row of a table in every chart.
     void setShearOnly(bool shearOnly);
+
+    /// The pages, in order ("Shear tests", "Compaction").
+    QStringList pages() const;
+    /// Shows page `page` (a name from pages()); the shown page's name.
+    void showPage(const QString& page);
+    QString currentPage() const;
+    /// The page of the charts that draw the rows of `stage` (e.g. "compaction 15 kPa"), or "".
+    QString pageOfStage(const std::string& stage) const;
 
     int chartCount() const { return static_cast<int>(views_.size()); }
     const ChartDefinition& definition(int chart) const { return definitions_[chart]; }
@@ -114,6 +132,7 @@ private:
     /// (chart, test, column) -> curve.
     std::map<std::tuple<int, std::string, std::string>, Curve> curves_;
     bool shearOnly_ = true;
+    QTabWidget* tabs_ = nullptr;
 };
 
 } // namespace grainlab::ui

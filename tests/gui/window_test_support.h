@@ -1,0 +1,54 @@
+#pragma once
+// What the window tests share: the small experiment (120 ovals, one confining pressure, shear to
+// 0.5 %) read from experiment text as a window run records it, waiting on the event loop, and
+// clicking a toolbar action like a user.
+#include <chrono>
+#include <string>
+
+#include <QAction>
+#include <QTest>
+#include <QToolBar>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "grainlab/experiment_file.h"
+#include "gui/main_window.h"
+
+namespace grainlab::ui::window_tests {
+
+/// The quick run's experiment made small, read back from its text.
+inline ExperimentConfig smallExperiment(double shearTarget = 0.005) {
+    const std::string path = GRAINLAB_SOURCE_DIR "/resources/experiments/quick.json";
+    auto j = nlohmann::ordered_json::parse(readExperimentFile(path).sourceText);
+    j["threads"] = 1;
+    j["grains"]["count"] = 120;
+    j["compaction"]["pressures"] = {15e3};
+    j["shear"]["pressures"] = {15e3};
+    j["shear"]["target_axial_strain"] = shearTarget;
+    return parseExperimentText(j.dump(2), path);
+}
+
+template <class Predicate>
+bool waitFor(Predicate done, int timeoutMs = 60000) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
+    while (!done()) {
+        if (std::chrono::steady_clock::now() > end) {
+            return false;
+        }
+        QTest::qWait(10);
+    }
+    return true;
+}
+
+/// Clicks the toolbar button of an action, like a user.
+inline void click(MainWindow& w, QAction* action) {
+    QToolBar* bar = w.findChild<QToolBar*>(QStringLiteral("runToolBar"));
+    ASSERT_NE(bar, nullptr);
+    QWidget* button = bar->widgetForAction(action);
+    ASSERT_NE(button, nullptr);
+    ASSERT_TRUE(button->isEnabled()) << action->text().toStdString();
+    QTest::mouseClick(button, Qt::LeftButton);
+}
+
+} // namespace grainlab::ui::window_tests
