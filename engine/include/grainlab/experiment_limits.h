@@ -22,6 +22,10 @@ std::int64_t maxGrainCount();
 /// grains before the servo can react.
 inline constexpr double kMaxStrainPerStep = 1e-3;
 
+/// Most size classes (grains.size_classes, or entries of grains.widths): one oval shape is built
+/// per class before the run (never more classes than grains either).
+inline constexpr std::int64_t kMaxSizeClasses = 1000;
+
 /// Grain widths the engine's arithmetic holds finite (areas, moments of inertia, masses) [m].
 inline constexpr double kMinGrainWidth = 1e-9;
 inline constexpr double kMaxGrainWidth = 1e3;
