@@ -1,10 +1,10 @@
 // Reproducible across machines: a short run of the shared compacted scene (with friction, so the
 // whole contact law is exercised), its final state hashed and compared with a checked-in hash.
 //
-// Applies to the portable build only (cmake -DGRAINLAB_NATIVE=OFF, which also compiles with
-// -ffp-contract=off): there every operation is a plain IEEE double operation in the order of the
-// source, with SSE2's two lanes on every x86-64 processor, so the bits do not depend on the
-// processor. The default build (-march=native) vectorises the pair loop with the processor's
+// Applies to the portable build only (cmake -DGRAINLAB_NATIVE=OFF): there every operation is a
+// plain IEEE double operation in the order of the source (every build compiles the engine with
+// -ffp-contract=off), with SSE2's two lanes on every x86-64 processor, so the bits do not depend
+// on the processor. The default build (-march=native) vectorises the pair loop with the processor's
 // vector width, which changes the order of the sums of the deterministic reductions, so its
 // bits are the same for any thread count and across restarts on one processor, not across
 // processors; there this test only checks that two runs agree.
