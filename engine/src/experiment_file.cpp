@@ -124,8 +124,11 @@ void readGrains(const JsonSection& g, AssemblySpec& a) {
                                g.path("end_radius_ratio")));
         }
     }
-    a.gap = g.number("grid_gap", nonNegative(), 0.1);
-    a.cellAspectRatio = g.number("cell_aspect_ratio", positive(), 1.0);
+    // Bounded so that the initial cell's lengths stay finite and the cell holds more than one
+    // grid row each way.
+    a.gap = g.number("grid_gap", closed(0.0, kMaxGridGap), 0.1);
+    a.cellAspectRatio =
+        g.number("cell_aspect_ratio", closed(1.0 / kMaxCellAspectRatio, kMaxCellAspectRatio), 1.0);
 }
 
 void readDamping(const JsonSection& d, DampingParameters& damping) {

@@ -121,6 +121,19 @@ TEST(HostileExperiment, DerivedQuantitiesMustBeFinite) {
     expectRefused(j, "grains.widths[1]", {"grains.widths[1]", "1e-09"});
 }
 
+TEST(HostileExperiment, GridGapAndCellShapeAreBounded) {
+    // grid_gap 1e308 passed the reader and blew up at step 1 (found by experiment_fuzz).
+    Json j = minimalExperiment();
+    j["grains"]["grid_gap"] = 1e308;
+    expectRefused(j, "grains.grid_gap", {"grains.grid_gap", "[0, 100]"});
+    j = minimalExperiment();
+    j["grains"]["cell_aspect_ratio"] = 1e308;
+    expectRefused(j, "grains.cell_aspect_ratio", {"grains.cell_aspect_ratio", "[0.001, 1000]"});
+    j = minimalExperiment();
+    j["grains"]["cell_aspect_ratio"] = 1e-300;
+    expectRefused(j, "grains.cell_aspect_ratio", {"grains.cell_aspect_ratio"});
+}
+
 TEST(HostileExperiment, TimeStepCheckRefusesANonFiniteLimit) {
     Json j = minimalExperiment();
     j["material"]["normal_stiffness"] = 1e308; // k z overflows: the limit is 0
