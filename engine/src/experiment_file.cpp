@@ -79,6 +79,8 @@ void readGrains(const JsonSection& g, AssemblySpec& a) {
     }
     a.grainCount = static_cast<int>(count);
     const Range width = closed(kMinGrainWidth, kMaxGrainWidth);
+    // One shape per size class is built before the run: no more classes than grains.
+    const std::int64_t maxClasses = std::min<std::int64_t>(count, kMaxSizeClasses);
     if (g.has("widths")) {
         for (const char* k : {"width_min", "width_max", "size_classes"}) {
             if (g.has(k)) {
@@ -88,10 +90,17 @@ void readGrains(const JsonSection& g, AssemblySpec& a) {
             }
         }
         a.widths = *g.numbers("widths", width);
+        if (std::int64_t(a.widths.size()) > maxClasses) {
+            g.fail("widths",
+                   fmt::format("{} lists {} widths: at most {} (no more size classes "
+                               "than grains, and at most {})",
+                               g.path("widths"), a.widths.size(), maxClasses, kMaxSizeClasses));
+        }
     } else {
         const double wMin = g.number("width_min", width, std::nullopt);
         const double wMax = g.number("width_max", closed(wMin, kMaxGrainWidth), std::nullopt);
-        const int classes = static_cast<int>(g.integer("size_classes", 1, kMaxInt, std::nullopt));
+        const int classes =
+            static_cast<int>(g.integer("size_classes", 1, maxClasses, std::nullopt));
         if (classes == 1 && wMax != wMin) {
             g.refuse("width_max", g.at("width_max"),
                      fmt::format("equal to width_min ({}) when size_classes is 1", wMin));
@@ -115,8 +124,11 @@ void readGrains(const JsonSection& g, AssemblySpec& a) {
                                g.path("end_radius_ratio")));
         }
     }
-    a.gap = g.number("grid_gap", nonNegative(), 0.1);
-    a.cellAspectRatio = g.number("cell_aspect_ratio", positive(), 1.0);
+    // Bounded so that the initial cell's lengths stay finite and the cell holds more than one
+    // grid row each way.
+    a.gap = g.number("grid_gap", closed(0.0, kMaxGridGap), 0.1);
+    a.cellAspectRatio =
+        g.number("cell_aspect_ratio", closed(1.0 / kMaxCellAspectRatio, kMaxCellAspectRatio), 1.0);
 }
 
 void readDamping(const JsonSection& d, DampingParameters& damping) {

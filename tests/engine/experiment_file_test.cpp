@@ -262,7 +262,7 @@ TEST(ExperimentFile, OutOfRangeValuesNameTheRange) {
         {{"grains", "count"}, 0, "grains.count", "0", ">= 1"},
         {{"grains", "width_min"}, -1e-3, "grains.width_min", "-0.001", "[1e-09, 1000]"},
         {{"grains", "width_max"}, 0.5e-3, "grains.width_max", "0.0005", "[0.001, 1000]"},
-        {{"grains", "grid_gap"}, -0.1, "grains.grid_gap", "-0.1", ">= 0"},
+        {{"grains", "grid_gap"}, -0.1, "grains.grid_gap", "-0.1", "[0, 100]"},
         {{"material", "normal_stiffness"}, 0, "material.normal_stiffness", "0", "> 0"},
         {{"material", "tangential_stiffness"}, -1, "material.tangential_stiffness", "-1", "> 0"},
         {{"material", "density"}, 0, "material.density", "0", "> 0"},

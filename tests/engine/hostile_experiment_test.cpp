@@ -91,6 +91,19 @@ TEST(HostileExperiment, GrainCountBeyondMemoryIsRefused) {
     EXPECT_GE(maxGrainCount(), 100000); // any machine that runs the suite holds 100k grains
 }
 
+TEST(HostileExperiment, SizeClassesAreBounded) {
+    // 1e8 size classes built 1e8 oval shapes: the reader hung (found by experiment_fuzz).
+    Json j = minimalExperiment();
+    j["grains"]["size_classes"] = 100000000;
+    expectRefused(j, "grains.size_classes", {"grains.size_classes", "[1, 50]"});
+    j = minimalExperiment();
+    j["grains"].erase("width_min");
+    j["grains"].erase("width_max");
+    j["grains"].erase("size_classes");
+    j["grains"]["widths"] = std::vector<double>(51, 1e-3);
+    expectRefused(j, "grains.widths", {"grains.widths", "at most 50"});
+}
+
 TEST(HostileExperiment, DerivedQuantitiesMustBeFinite) {
     // aspect_ratio 1e-308 gave a non-finite time-step limit that passed the check.
     Json j = minimalExperiment();
@@ -106,6 +119,19 @@ TEST(HostileExperiment, DerivedQuantitiesMustBeFinite) {
     j["grains"].erase("size_classes");
     j["grains"]["widths"] = {1e-3, 1e-300};
     expectRefused(j, "grains.widths[1]", {"grains.widths[1]", "1e-09"});
+}
+
+TEST(HostileExperiment, GridGapAndCellShapeAreBounded) {
+    // grid_gap 1e308 passed the reader and blew up at step 1 (found by experiment_fuzz).
+    Json j = minimalExperiment();
+    j["grains"]["grid_gap"] = 1e308;
+    expectRefused(j, "grains.grid_gap", {"grains.grid_gap", "[0, 100]"});
+    j = minimalExperiment();
+    j["grains"]["cell_aspect_ratio"] = 1e308;
+    expectRefused(j, "grains.cell_aspect_ratio", {"grains.cell_aspect_ratio", "[0.001, 1000]"});
+    j = minimalExperiment();
+    j["grains"]["cell_aspect_ratio"] = 1e-300;
+    expectRefused(j, "grains.cell_aspect_ratio", {"grains.cell_aspect_ratio"});
 }
 
 TEST(HostileExperiment, TimeStepCheckRefusesANonFiniteLimit) {

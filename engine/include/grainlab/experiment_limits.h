@@ -22,6 +22,16 @@ std::int64_t maxGrainCount();
 /// grains before the servo can react.
 inline constexpr double kMaxStrainPerStep = 1e-3;
 
+/// Most size classes (grains.size_classes, or entries of grains.widths): one oval shape is built
+/// per class before the run (never more classes than grains either).
+inline constexpr std::int64_t kMaxSizeClasses = 1000;
+
+/// Largest grains.grid_gap (free space between grid neighbours, in largest widths) [-]: a looser
+/// grid only lengthens the compaction, and past it the initial cell's lengths overflow.
+inline constexpr double kMaxGridGap = 100.0;
+/// grains.cell_aspect_ratio (L1/L2 of the initial cell) must lie in [1/this, this] [-].
+inline constexpr double kMaxCellAspectRatio = 1000.0;
+
 /// Grain widths the engine's arithmetic holds finite (areas, moments of inertia, masses) [m].
 inline constexpr double kMinGrainWidth = 1e-9;
 inline constexpr double kMaxGrainWidth = 1e3;
