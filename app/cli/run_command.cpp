@@ -193,6 +193,9 @@ int runExperimentCommand(const RunOptions& options) {
             }
         }
         if (status == 0) {
+            // The run file is complete on disk before the cost record says the run is finished
+            // (a study takes a finished record as a finished, readable run).
+            output.close();
             saveCost(true);
             bar.update(1.0, "done");
             bar.finish();

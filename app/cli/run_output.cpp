@@ -79,6 +79,11 @@ RunOutputFolder::RunOutputFolder(const std::string& folder, const std::string& e
                                          resume ? RunFile::Mode::Resume : RunFile::Mode::Create);
 }
 
+void RunOutputFolder::close() {
+    csv_.clear();
+    runFile_.reset();
+}
+
 std::string RunOutputFolder::runFilePath() const { return (fs::path(folder_) / "run.h5").string(); }
 
 std::string RunOutputFolder::seriesPath(const std::string& test) const {

@@ -32,8 +32,8 @@ private:
     int fd_ = -1;
 };
 
-/// Removes what a run wrote into `folder` (run.h5, cost.json and every <test>/series.csv, with the test
-/// folders left empty), for `grainlab run --force`. Other files stay.
+/// Removes what a run wrote into `folder` (run.h5, cost.json and every <test>/series.csv, with
+/// the test folders left empty), for `grainlab run --force`. Other files stay.
 void removeRunFiles(const std::string& folder);
 
 class RunOutputFolder : public RunOutput {
@@ -51,6 +51,9 @@ public:
 
     std::string runFilePath() const;
     std::string seriesPath(const std::string& test) const;
+    /// Closes the run file and the CSV files (a closed run file is complete on disk). Nothing
+    /// may be written after it.
+    void close();
 
     /// Everything a resumed run needs, read from the run file of `folder`.
     static ResumePoint readResumePoint(const std::string& folder);
