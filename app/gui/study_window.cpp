@@ -367,7 +367,7 @@ QString StudyWindow::logTail() const {
     // What the study itself said (its recommendation, a failed run), not its progress lines.
     QStringList said;
     for (const QString& line : QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts)) {
-        if (line.startsWith(QStringLiteral("grainlab study")) && !line.contains("settings x")) {
+        if (line.startsWith(QStringLiteral("grainlab")) && !line.contains("settings x")) {
             said << line;
         } else if (line.startsWith(QStringLiteral("  "))) {
             said << line; // a failed run, listed under its heading

@@ -82,6 +82,7 @@ public:
     QPushButton* startButton() const { return startButton_; }
     QPushButton* stopButton() const { return stopButton_; }
     QPushButton* recommendedButton() const { return recommended_; }
+    QLabel* statusLabel() const { return status_; }
 
 signals:
     /// The user asked to see this run folder (runs/<run>/) in the main window.

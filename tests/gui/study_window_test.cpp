@@ -52,7 +52,7 @@ int finished(const StudyWindow& s) {
     return s.progress() ? s.progress()->finishedCount() : 0;
 }
 
-TEST(StudyWindow, RefusesABadStudyFileNamingIt) {
+TEST(StudyWindow, RefusesABadStudyFileAndAFolderHoldingSomethingElse) {
     StudyWindow s(nullptr, QStringLiteral(GRAINLAB_EXE));
     QTemporaryDir dir;
     const QString bad = dir.filePath("bad.json");
@@ -72,6 +72,19 @@ TEST(StudyWindow, RefusesABadStudyFileNamingIt) {
     EXPECT_EQ(s.plan().runs.size(), 6u);
     EXPECT_EQ(s.studyFolder(), QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/studies/tiny"));
     EXPECT_TRUE(s.startButton()->isEnabled());
+    // A folder that holds something else: the study refuses it, and the window says why.
+    const QString other = dir.filePath("other");
+    ASSERT_TRUE(QDir().mkpath(other));
+    QFile stray(QDir(other).filePath("notes.txt"));
+    ASSERT_TRUE(stray.open(QIODevice::WriteOnly));
+    stray.close();
+    s.setStudyFolder(other);
+    ASSERT_TRUE(s.start(&error)) << error.toStdString();
+    ASSERT_TRUE(waitFor([&] { return !s.running(); }, 60000));
+    EXPECT_EQ(s.lastExitStatus().value_or(-99), 1);
+    EXPECT_TRUE(s.statusLabel()->text().contains("not empty"))
+        << s.statusLabel()->text().toStdString();
+    EXPECT_FALSE(QFileInfo::exists(QDir(other).filePath("study.json")));
 }
 
 TEST(StudyWindow, RunsTheTinyStudyAndChartsOnePointPerSetting) {
@@ -146,8 +159,10 @@ TEST(StudyWindow, RunsTheTinyStudyAndChartsOnePointPerSetting) {
         bool alone = true;
         for (int j = 0; j < settings; ++j) {
             const QPoint d = pixels[std::size_t(j)] - pixels[std::size_t(k)];
-            const bool overlaps = d.manhattanLength() <= 14;
-            if (j != k && overlaps) {
+            // Drawn over by point j: its disk and ring, or its error bars through its centre.
+            const bool close = d.manhattanLength() <= 14;
+            const bool overlaps = close || std::abs(d.x()) <= 2 || std::abs(d.y()) <= 2;
+            if (j != k && close) {
                 alone = false;
             }
             // A later point drawn over this one (its fill, error bars or ring, blended): dark,
@@ -171,14 +186,18 @@ TEST(StudyWindow, RunsTheTinyStudyAndChartsOnePointPerSetting) {
     QSignalSpy opened(s, &StudyWindow::openRunFolderRequested);
     EXPECT_FALSE(w.runFileSlider()->isVisibleTo(&w));
     for (int k : isolated) {
-        const std::string id = s->plan().settings[std::size_t(s->settingOfPoint(k))].id;
+        // The point's label names its setting (errorCostPlot), independently of the window.
+        const std::string id = plot.points[std::size_t(k)].label.toStdString();
+        EXPECT_EQ(s->plan().settings[std::size_t(s->settingOfPoint(k))].id, id);
         QTest::mouseMove(s->chart(), pixels[std::size_t(k)] + QPoint(1, 1));
         EXPECT_TRUE(s->details()->text().contains(QString::fromStdString("<b>" + id + "</b>")))
             << id << ": " << s->details()->text().toStdString();
         QTest::mouseClick(s->chart(), Qt::LeftButton, {}, pixels[std::size_t(k)]);
         ASSERT_FALSE(opened.isEmpty());
         const QString run = opened.last().at(0).toString();
-        EXPECT_EQ(run, QDir(folder).filePath(QString::fromStdString("runs/" + id + "-seed1")));
+        EXPECT_EQ(
+            run.toStdString(),
+            QDir(folder).filePath(QString::fromStdString("runs/" + id + "-seed1")).toStdString());
         EXPECT_TRUE(QFileInfo::exists(QDir(run).filePath("run.h5"))) << run.toStdString();
     }
     EXPECT_EQ(opened.size(), int(isolated.size()));
