@@ -316,6 +316,7 @@ bool StudyWindow::start(QString* error) {
         }
     });
     lastExit_.reset();
+    stopping_ = false;
     finishedAtStart_ = progress_ ? progress_->finishedCount() : 0;
     sinceStart_.start();
     status_->setText(tr("Running: %1 study %2 --out %3").arg(grainlab_, studyFile_, folder_));
@@ -330,6 +331,7 @@ bool StudyWindow::start(QString* error) {
 void StudyWindow::stop() {
     if (process_ && process_->processId() > 0) {
         ::kill(pid_t(process_->processId()), SIGINT);
+        stopping_ = true;
         status_->setText(tr("Stopping: the runs write their checkpoints…"));
         stopButton_->setEnabled(false);
     }
@@ -345,7 +347,9 @@ void StudyWindow::processEnded(int exitStatus) {
     lastExit_ = exitStatus;
     if (exitStatus == 0) {
         status_->setText(tr("The study finished. %1").arg(logTail()));
-    } else if (exitStatus == 130) {
+    } else if (exitStatus == 130 || stopping_) {
+        // 130: the study stopped its runs; another status after Stop: stopped before it had
+        // started any (Ctrl-C while it was still preparing its folder).
         status_->setText(tr("Stopped: the runs wrote checkpoints; Start continues the study."));
     } else if (status_->text().startsWith(tr("Could not start"))) {
         // said already

@@ -122,6 +122,7 @@ private:
     QProcess* process_ = nullptr;
     QString logPath_;
     std::optional<int> lastExit_;
+    bool stopping_ = false; ///< Stop was pressed for the running study
     QElapsedTimer sinceStart_;
     int finishedAtStart_ = 0;
 
