@@ -31,6 +31,7 @@
 #include "grainlab/ui/scene_options_bar.h"
 #include "grainlab/ui/scene_view.h"
 #include "gui/edited_experiment.h"
+#include "gui/study_window.h"
 #include "gui/window_run_folder.h"
 
 namespace grainlab::ui {
@@ -214,6 +215,7 @@ void MainWindow::buildMenus() {
     file->addAction(open_);
     file->addAction(saveAs_);
     file->addAction(tr("Open &run file…"), this, &MainWindow::openRunFileDialog);
+    file->addAction(tr("&Study…"), this, &MainWindow::showStudyWindow);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
     QMenu* run = menuBar()->addMenu(tr("&Run"));
@@ -587,6 +589,39 @@ bool MainWindow::openRunFile(const QString& path, QString* error) {
         showRunFileCheckpoint(count - 1);
     }
     return true;
+}
+
+bool MainWindow::openRunFolder(const QString& folder, QString* error) {
+    return openRunFile(QDir(folder).filePath(QStringLiteral("run.h5")), error);
+}
+
+StudyWindow* MainWindow::studyWindow() {
+    if (!study_) {
+        study_ = new StudyWindow(this);
+        connect(study_, &StudyWindow::openRunFolderRequested, this, [this](const QString& folder) {
+            QString error;
+            if (!openRunFolder(folder, &error)) {
+                showError(error);
+            }
+            raise();
+            activateWindow();
+        });
+        connect(study_, &StudyWindow::openExperimentRequested, this, [this](const QString& path) {
+            QString error;
+            if (!openExperiment(path, &error)) {
+                showError(error);
+            }
+            raise();
+            activateWindow();
+        });
+    }
+    return study_;
+}
+
+void MainWindow::showStudyWindow() {
+    studyWindow()->show();
+    study_->raise();
+    study_->activateWindow();
 }
 
 void MainWindow::showRunFileCheckpoint(int index) {

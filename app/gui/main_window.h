@@ -36,6 +36,7 @@ class InspectorPanel;
 class ParametersPanel;
 class SceneOptionsBar;
 class SceneView;
+class StudyWindow;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -55,6 +56,13 @@ public:
     /// Opens a run file: its series join the charts and its checkpoints can be scrubbed with the
     /// slider under the scene (the live run is paused). Returns false and sets `error` on failure.
     bool openRunFile(const QString& path, QString* error = nullptr);
+    /// Opens the run file of a run folder (what `grainlab run --out` writes).
+    bool openRunFolder(const QString& folder, QString* error = nullptr);
+    /// The Study window (made on first use); its points open run folders here and its
+    /// recommendation loads here as the experiment.
+    StudyWindow* studyWindow();
+    /// Shows the Study window (menu File > Study…).
+    void showStudyWindow();
     /// Shows checkpoint `index` of the open run file in the scene.
     void showRunFileCheckpoint(int index);
     /// True while the scene shows a kept snapshot of the live run (a chart is hovered).
@@ -147,6 +155,7 @@ private:
     InspectorPanel* inspector_;
     ParametersPanel* parameters_;
     QTabWidget* tabs_;
+    StudyWindow* study_ = nullptr;
     QAction* open_ = nullptr;
     QAction* start_ = nullptr;
     QAction* pause_ = nullptr;

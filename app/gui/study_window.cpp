@@ -1,0 +1,644 @@
+// See study_window.h.
+#include "gui/study_window.h"
+
+#include <cmath>
+#include <csignal>
+
+#include <signal.h>
+
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QCursor>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProcess>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QToolTip>
+#include <QVBoxLayout>
+
+#include "grainlab/study_file.h"
+#include "grainlab/ui/plot_view.h"
+#include "grainlab/ui/study_figures.h"
+
+namespace grainlab::ui {
+namespace {
+
+constexpr int kPollMs = 1000; ///< how often the folder is read while the study runs
+
+QString q(const std::string& s) {
+    return QString::fromStdString(s);
+}
+
+QString formatDuration(double seconds) {
+    if (seconds < 0.0 || !std::isfinite(seconds)) {
+        return QStringLiteral("–");
+    }
+    const auto s = static_cast<qint64>(seconds + 0.5);
+    if (s >= 3600) {
+        return QStringLiteral("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60);
+    }
+    if (s >= 60) {
+        return QStringLiteral("%1 min %2 s").arg(s / 60).arg(s % 60);
+    }
+    return QStringLiteral("%1 s").arg(s);
+}
+
+QString number(double v) {
+    return QString::number(v, 'g', 4);
+}
+
+QString yesNo(bool v) {
+    return v ? QObject::tr("yes") : QObject::tr("no");
+}
+
+const MetricSummary* findMetric(const SettingSummary& s, const std::string& test,
+                                const std::string& metric) {
+    for (const MetricSummary& m : s.metrics) {
+        if (m.test == test && m.metric == metric) {
+            return &m;
+        }
+    }
+    return nullptr;
+}
+
+/// Sets the items of `box` to `items`, keeping the current choice when it is still there.
+void setItems(QComboBox* box, const QStringList& items) {
+    QStringList now;
+    for (int k = 0; k < box->count(); ++k) {
+        now << box->itemText(k);
+    }
+    if (now == items) {
+        return;
+    }
+    const QSignalBlocker block(box);
+    const QString current = box->currentText();
+    box->clear();
+    box->addItems(items);
+    const int k = box->findText(current);
+    box->setCurrentIndex(k >= 0 ? k : 0);
+}
+
+} // namespace
+
+StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
+    : QWidget(parent, Qt::Window),
+      grainlab_(grainlab.isEmpty() ? QCoreApplication::applicationFilePath() : grainlab),
+      workerContext_(new QObject) {
+    setWindowTitle(tr("GrainLab — Study"));
+    workerContext_->moveToThread(&worker_);
+    worker_.start();
+    poll_.setInterval(kPollMs);
+    connect(&poll_, &QTimer::timeout, this, [this] {
+        rescan();
+        updateProgressText();
+    });
+
+    fileLabel_ = new QLabel(tr("no study open"));
+    fileLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* openButton = new QPushButton(tr("Open study…"));
+    connect(openButton, &QPushButton::clicked, this, &StudyWindow::openStudyDialog);
+    folderLabel_ = new QLabel(tr("–"));
+    folderLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    folderButton_ = new QPushButton(tr("Choose…"));
+    connect(folderButton_, &QPushButton::clicked, this, &StudyWindow::chooseFolderDialog);
+    auto* folderHint = new QLabel(
+        tr("By default a folder named after the study beside the study file. A folder that "
+           "already holds this study is continued: finished runs are not redone."));
+    folderHint->setWordWrap(true);
+    folderHint->setStyleSheet(QStringLiteral("color: gray"));
+
+    auto* files = new QGridLayout;
+    files->addWidget(new QLabel(tr("Study file:")), 0, 0);
+    files->addWidget(fileLabel_, 0, 1);
+    files->addWidget(openButton, 0, 2);
+    files->addWidget(new QLabel(tr("Study folder:")), 1, 0);
+    files->addWidget(folderLabel_, 1, 1);
+    files->addWidget(folderButton_, 1, 2);
+    files->addWidget(folderHint, 2, 1, 1, 2);
+    files->setColumnStretch(1, 1);
+
+    startButton_ = new QPushButton(tr("Start"));
+    startButton_->setToolTip(tr("Run the study (grainlab study FILE --out FOLDER); a stopped "
+                                "study continues where it stopped"));
+    connect(startButton_, &QPushButton::clicked, this, [this] {
+        QString error;
+        if (!start(&error)) {
+            status_->setText(error);
+        }
+    });
+    stopButton_ = new QPushButton(tr("Stop"));
+    stopButton_->setToolTip(tr("Stop the study: its runs write checkpoints; Start continues"));
+    connect(stopButton_, &QPushButton::clicked, this, &StudyWindow::stop);
+    bar_ = new QProgressBar;
+    bar_->setFormat(tr("%v / %m runs"));
+    bar_->setRange(0, 1);
+    bar_->setValue(0);
+    progressText_ = new QLabel;
+    auto* runRow = new QHBoxLayout;
+    runRow->addWidget(startButton_);
+    runRow->addWidget(stopButton_);
+    runRow->addWidget(bar_, 1);
+    runRow->addWidget(progressText_);
+
+    test_ = new QComboBox;
+    test_->setToolTip(tr("The shear test (confining pressure) charted"));
+    metric_ = new QComboBox;
+    metric_->setToolTip(tr("The metric whose error is charted against the cost"));
+    connect(test_, &QComboBox::currentIndexChanged, this, &StudyWindow::redraw);
+    connect(metric_, &QComboBox::currentIndexChanged, this, &StudyWindow::redraw);
+    export_ = new QPushButton(tr("Export figures…"));
+    connect(export_, &QPushButton::clicked, this, &StudyWindow::exportFiguresDialog);
+    recommended_ = new QPushButton(tr("Open recommended.json"));
+    recommended_->setToolTip(tr("Load the recommended setting as the main window's experiment"));
+    connect(recommended_, &QPushButton::clicked, this, &StudyWindow::openRecommended);
+    auto* chartRow = new QHBoxLayout;
+    chartRow->addWidget(new QLabel(tr("Test:")));
+    chartRow->addWidget(test_);
+    chartRow->addWidget(new QLabel(tr("Metric:")));
+    chartRow->addWidget(metric_);
+    chartRow->addStretch(1);
+    chartRow->addWidget(export_);
+    chartRow->addWidget(recommended_);
+
+    chart_ = new PlotView;
+    chart_->setToolTip(tr("Hover a point for its setting; click it to open its first finished "
+                          "run in the main window"));
+    connect(chart_, &PlotView::pointHovered, this, &StudyWindow::showPoint);
+    connect(chart_, &PlotView::pointClicked, this, &StudyWindow::clickPoint);
+    details_ = new QLabel(tr("Hover a point for its setting and numbers."));
+    details_->setWordWrap(true);
+    details_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    details_->setFixedWidth(300);
+    auto* centre = new QHBoxLayout;
+    centre->addWidget(chart_, 1);
+    centre->addWidget(details_);
+
+    status_ = new QLabel;
+    status_->setWordWrap(true);
+    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(files);
+    layout->addLayout(runRow);
+    layout->addLayout(chartRow);
+    layout->addLayout(centre, 1);
+    layout->addWidget(status_);
+    resize(1100, 720);
+    redraw();
+    updateControls();
+}
+
+StudyWindow::~StudyWindow() {
+    poll_.stop();
+    worker_.quit();
+    worker_.wait();
+    delete workerContext_;
+    if (process_ && process_->state() != QProcess::NotRunning) {
+        // The study goes on without the window (its output goes to a file, not to us): the
+        // process object is let go, so that its destructor does not kill it.
+        disconnect(process_, nullptr, this, nullptr);
+        process_->setParent(nullptr);
+        process_ = nullptr;
+    }
+}
+
+QString StudyWindow::defaultStudyFolder(const QString& studyFile, const StudySpec& spec) {
+    return QDir::cleanPath(QFileInfo(studyFile).absoluteDir().filePath(q(spec.name)));
+}
+
+bool StudyWindow::openStudy(const QString& path, QString* error) {
+    if (running()) {
+        if (error) {
+            *error = tr("A study is running: stop it before opening another.");
+        }
+        return false;
+    }
+    StudySpec spec;
+    StudyPlan plan;
+    try {
+        spec = readStudyFile(path.toStdString());
+        plan = planStudy(spec);
+    } catch (const std::exception& e) {
+        if (error) {
+            *error = QString::fromStdString(e.what());
+        }
+        return false;
+    }
+    spec_ = std::move(spec);
+    plan_ = std::move(plan);
+    haveStudy_ = true;
+    studyFile_ = QFileInfo(path).absoluteFilePath();
+    fileLabel_->setText(tr("%1 — %2: %3 settings × %4 seeds = %5 runs")
+                            .arg(studyFile_, q(spec_.name))
+                            .arg(plan_.settings.size())
+                            .arg(spec_.seeds.size())
+                            .arg(plan_.runs.size()));
+    setWindowTitle(tr("GrainLab — Study %1").arg(q(spec_.name)));
+    // Metrics: the deciding ones first, then the others with a tolerance; more join from the
+    // summary once runs have finished.
+    QStringList metrics;
+    for (const std::string& m : spec_.deciding) {
+        metrics << q(m);
+    }
+    for (const auto& [m, tolerance] : spec_.tolerances) {
+        if (!metrics.contains(q(m))) {
+            metrics << q(m);
+        }
+    }
+    {
+        const QSignalBlocker blockMetric(metric_);
+        const QSignalBlocker blockTest(test_);
+        metric_->clear();
+        metric_->addItems(metrics);
+        test_->clear();
+    }
+    status_->clear();
+    setStudyFolder(defaultStudyFolder(studyFile_, spec_));
+    return true;
+}
+
+void StudyWindow::setStudyFolder(const QString& folder) {
+    if (running()) {
+        return;
+    }
+    folder_ = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
+    folderLabel_->setText(folder_);
+    ++generation_;
+    progress_.reset();
+    lastExit_.reset();
+    redraw();
+    updateProgressText();
+    updateControls();
+    rescan();
+}
+
+bool StudyWindow::running() const {
+    return process_ != nullptr;
+}
+
+bool StudyWindow::start(QString* error) {
+    const auto fail = [error](const QString& message) {
+        if (error) {
+            *error = message;
+        }
+        return false;
+    };
+    if (!haveStudy_) {
+        return fail(tr("Open a study file first."));
+    }
+    if (running()) {
+        return fail(tr("The study is already running."));
+    }
+    // The study's own output (its summary, a failed run's name) goes to a file: the study must
+    // not depend on the window's pipes, since it goes on when the window closes.
+    logPath_ = QDir(QDir::tempPath())
+                   .filePath(QStringLiteral("grainlab-study-%1-%2.log")
+                                 .arg(q(spec_.name))
+                                 .arg(QCoreApplication::applicationPid()));
+    process_ = new QProcess(this);
+    process_->setStandardInputFile(QProcess::nullDevice());
+    process_->setProcessChannelMode(QProcess::MergedChannels);
+    process_->setStandardOutputFile(logPath_, QIODevice::Truncate);
+    connect(process_, &QProcess::finished, this, [this](int code, QProcess::ExitStatus status) {
+        processEnded(status == QProcess::NormalExit ? code : -1);
+    });
+    connect(process_, &QProcess::errorOccurred, this, [this](QProcess::ProcessError e) {
+        if (e == QProcess::FailedToStart) {
+            status_->setText(tr("Could not start %1: %2").arg(grainlab_, process_->errorString()));
+            processEnded(-1);
+        }
+    });
+    lastExit_.reset();
+    stopping_ = false;
+    finishedAtStart_ = progress_ ? progress_->finishedCount() : 0;
+    sinceStart_.start();
+    status_->setText(tr("Running: %1 study %2 --out %3").arg(grainlab_, studyFile_, folder_));
+    process_->start(grainlab_,
+                    {QStringLiteral("study"), studyFile_, QStringLiteral("--out"), folder_});
+    poll_.start();
+    updateControls();
+    updateProgressText();
+    return true;
+}
+
+void StudyWindow::stop() {
+    if (process_ && process_->processId() > 0) {
+        ::kill(pid_t(process_->processId()), SIGINT);
+        stopping_ = true;
+        status_->setText(tr("Stopping: the runs write their checkpoints…"));
+        stopButton_->setEnabled(false);
+    }
+}
+
+void StudyWindow::processEnded(int exitStatus) {
+    if (!process_) {
+        return;
+    }
+    poll_.stop();
+    process_->deleteLater();
+    process_ = nullptr;
+    lastExit_ = exitStatus;
+    if (exitStatus == 0) {
+        status_->setText(tr("The study finished. %1").arg(logTail()));
+    } else if (exitStatus == 130 || stopping_) {
+        // 130: the study stopped its runs; another status after Stop: stopped before it had
+        // started any (Ctrl-C while it was still preparing its folder).
+        status_->setText(tr("Stopped: the runs wrote checkpoints; Start continues the study."));
+    } else if (status_->text().startsWith(tr("Could not start"))) {
+        // said already
+    } else {
+        status_->setText(
+            tr("The study failed (exit status %1): %2").arg(exitStatus).arg(logTail()));
+    }
+    rescan();
+    updateControls();
+    updateProgressText();
+    emit studyEnded(exitStatus);
+}
+
+QString StudyWindow::logTail() const {
+    QFile file(logPath_);
+    if (!file.open(QIODevice::ReadOnly)) {
+        return {};
+    }
+    // What the study itself said (its recommendation, a failed run), not its progress lines.
+    QStringList said;
+    for (const QString& line : QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts)) {
+        if (line.startsWith(QStringLiteral("grainlab")) && !line.contains("settings x")) {
+            said << line;
+        } else if (line.startsWith(QStringLiteral("  "))) {
+            said << line; // a failed run, listed under its heading
+        }
+    }
+    return said.mid(std::max<qsizetype>(0, said.size() - 4)).join(QStringLiteral("\n"));
+}
+
+void StudyWindow::rescan() {
+    if (!haveStudy_ || folder_.isEmpty()) {
+        return;
+    }
+    if (scanning_) {
+        rescanWanted_ = true;
+        return;
+    }
+    scanning_ = true;
+    // Everything the scan needs is copied in: the worker never touches the window.
+    QMetaObject::invokeMethod(
+        workerContext_,
+        [this, generation = generation_, folder = folder_.toStdString(), spec = spec_, plan = plan_,
+         previous = progress_] {
+            std::shared_ptr<const StudyProgress> next;
+            QString error;
+            try {
+                next = scanStudyFolder(folder, spec, plan, previous);
+            } catch (const std::exception& e) {
+                error = QString::fromStdString(e.what());
+            }
+            QMetaObject::invokeMethod(
+                this,
+                [this, generation, next, error] {
+                    scanning_ = false;
+                    if (generation == generation_) {
+                        if (next) {
+                            scanned(next);
+                        } else {
+                            status_->setText(error);
+                        }
+                    }
+                    if (rescanWanted_) {
+                        rescanWanted_ = false;
+                        rescan();
+                    }
+                },
+                Qt::QueuedConnection);
+        },
+        Qt::QueuedConnection);
+}
+
+void StudyWindow::scanned(std::shared_ptr<const StudyProgress> progress) {
+    const bool changed = progress != progress_;
+    progress_ = std::move(progress);
+    if (!progress_->errors.empty()) {
+        status_->setText(q(progress_->errors.front()));
+    }
+    if (changed) {
+        fillChoices();
+        redraw();
+    }
+    updateProgressText();
+    updateControls();
+    emit progressChanged();
+}
+
+void StudyWindow::fillChoices() {
+    if (!progress_) {
+        return;
+    }
+    QStringList tests;
+    for (const std::string& t : progress_->summary.tests) {
+        tests << q(t);
+    }
+    setItems(test_, tests);
+    QStringList metrics;
+    for (int k = 0; k < metric_->count(); ++k) {
+        metrics << metric_->itemText(k);
+    }
+    for (const SettingSummary& s : progress_->summary.settings) {
+        for (const MetricSummary& m : s.metrics) {
+            if (!metrics.contains(q(m.metric))) {
+                metrics << q(m.metric);
+            }
+        }
+    }
+    setItems(metric_, metrics);
+}
+
+void StudyWindow::redraw() {
+    PlotPainter plot;
+    if (progress_ && !progress_->results.empty() && test_->count() > 0 && metric_->count() > 0) {
+        plot = errorCostPlot(spec_, plan_, progress_->summary, test_->currentText().toStdString(),
+                             metric_->currentText().toStdString());
+    } else {
+        plot.title = haveStudy_ ? tr("no finished runs yet") : tr("open a study file");
+    }
+    chart_->setPlot(std::move(plot));
+    if (chart_->hoveredPoint() >= 0) {
+        showPoint(chart_->hoveredPoint());
+    }
+}
+
+void StudyWindow::updateControls() {
+    const bool isRunning = running();
+    startButton_->setEnabled(haveStudy_ && !isRunning);
+    stopButton_->setEnabled(isRunning);
+    folderButton_->setEnabled(haveStudy_ && !isRunning);
+    export_->setEnabled(progress_ && !progress_->results.empty());
+    recommended_->setEnabled(!folder_.isEmpty() &&
+                             QFileInfo::exists(QDir(folder_).filePath("recommended.json")));
+}
+
+void StudyWindow::updateProgressText() {
+    const int total = int(plan_.runs.size());
+    const int done = progress_ ? progress_->finishedCount() : 0;
+    bar_->setRange(0, std::max(1, total));
+    bar_->setValue(done);
+    QString text = tr("%1 of %2 runs finished").arg(done).arg(total);
+    if (running()) {
+        const double elapsed = double(sinceStart_.elapsed()) / 1000.0;
+        const int doneHere = done - finishedAtStart_;
+        const double eta = doneHere > 0 ? elapsed / doneHere * (total - done) : -1.0;
+        text += tr(" · running %1 · ETA %2").arg(formatDuration(elapsed), formatDuration(eta));
+    }
+    progressText_->setText(text);
+}
+
+int StudyWindow::settingOfPoint(int point) const {
+    const auto& points = chart_->plot().points;
+    if (point < 0 || point >= int(points.size())) {
+        return -1;
+    }
+    for (std::size_t k = 0; k < plan_.settings.size(); ++k) {
+        if (q(plan_.settings[k].id) == points[std::size_t(point)].label) {
+            return int(k);
+        }
+    }
+    return -1;
+}
+
+QString StudyWindow::firstFinishedRunFolder(int setting) const {
+    if (!progress_) {
+        return {};
+    }
+    for (std::size_t i = 0; i < plan_.runs.size(); ++i) {
+        if (plan_.runs[i].setting == setting && progress_->finished[i]) {
+            return QDir(folder_).filePath(QStringLiteral("runs/") + q(plan_.runs[i].id));
+        }
+    }
+    return {};
+}
+
+void StudyWindow::showPoint(int point) {
+    const int setting = settingOfPoint(point);
+    if (setting < 0 || !progress_) {
+        details_->setText(tr("Hover a point for its setting and numbers."));
+        return;
+    }
+    const StudySetting& st = plan_.settings[std::size_t(setting)];
+    const SettingSummary& s = progress_->summary.settings[std::size_t(setting)];
+    const std::string test = test_->currentText().toStdString();
+    const std::string metric = metric_->currentText().toStdString();
+    QStringList lines;
+    QString head = QStringLiteral("<b>%1</b>").arg(q(st.id).toHtmlEscaped());
+    if (st.isReference) {
+        head += tr(" (the reference)");
+    }
+    if (progress_->summary.recommended == setting) {
+        head += tr(" (recommended)");
+    }
+    lines << head;
+    for (const auto& [kind, level] : st.levels) {
+        lines << QStringLiteral("%1 = %2").arg(q(knobName(kind)), q(level.label()).toHtmlEscaped());
+    }
+    lines << tr("runs finished: %1 of %2").arg(s.runsDone).arg(spec_.seeds.size());
+    if (const MetricSummary* m = findMetric(s, test, metric)) {
+        lines << tr("%1 at %2: %3 ± %4 %5")
+                     .arg(q(metric), q(test), number(m->scatter.mean), number(m->scatter.sd),
+                          m->unit == "-" ? QString() : q(m->unit));
+        lines << tr("error: %1").arg(m->error ? number(*m->error) : QStringLiteral("–"));
+        lines << tr("noise (2σ of the reference): %1 · within: %2")
+                     .arg(m->noise ? number(*m->noise) : QStringLiteral("–"),
+                          yesNo(m->withinNoise));
+        if (m->withinTolerance) {
+            lines << tr("within tolerance: %1").arg(yesNo(*m->withinTolerance));
+        }
+    }
+    lines << tr("cost (%1): %2 ± %3")
+                 .arg(q(spec_.costMeasure), number(s.cost.mean), number(s.cost.sd));
+    lines << tr("wall time per run: %1 s · processor time: %2 s")
+                 .arg(number(s.wallSeconds.mean), number(s.cpuSeconds.mean));
+    lines << tr("speed-up over the reference: %1")
+                 .arg(s.speedUp ? QStringLiteral("%1×").arg(*s.speedUp, 0, 'f', 2)
+                                : QStringLiteral("–"));
+    lines << tr("valid (within tolerance on every deciding metric): %1").arg(yesNo(s.valid));
+    lines << tr("<i>Click to open its first finished run in the main window.</i>");
+    const QString text = lines.join(QStringLiteral("<br>"));
+    details_->setText(text);
+    if (chart_->underMouse()) {
+        QToolTip::showText(QCursor::pos(), text, chart_);
+    }
+}
+
+void StudyWindow::clickPoint(int point) {
+    const int setting = settingOfPoint(point);
+    if (setting < 0) {
+        return;
+    }
+    const QString folder = firstFinishedRunFolder(setting);
+    if (folder.isEmpty()) {
+        status_->setText(
+            tr("%1: no finished run yet").arg(q(plan_.settings[std::size_t(setting)].id)));
+        return;
+    }
+    emit openRunFolderRequested(folder);
+}
+
+QStringList StudyWindow::exportFigures(const QString& folder, QString* error) {
+    if (!progress_ || progress_->results.empty()) {
+        if (error) {
+            *error = tr("No finished runs to draw yet.");
+        }
+        return {};
+    }
+    if (!QDir().mkpath(folder)) {
+        if (error) {
+            *error = tr("%1: cannot create the folder").arg(folder);
+        }
+        return {};
+    }
+    return writeStudyFigures(folder, spec_, plan_, progress_->results, progress_->summary, error);
+}
+
+void StudyWindow::openStudyDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open study"), QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/studies"),
+        tr("Study files (*.json)"));
+    QString error;
+    if (!path.isEmpty() && !openStudy(path, &error)) {
+        status_->setText(error);
+    }
+}
+
+void StudyWindow::chooseFolderDialog() {
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Study folder"), folder_);
+    if (!folder.isEmpty()) {
+        setStudyFolder(folder);
+    }
+}
+
+void StudyWindow::exportFiguresDialog() {
+    const QString folder =
+        QFileDialog::getExistingDirectory(this, tr("Export the study's figures into"), folder_);
+    if (folder.isEmpty()) {
+        return;
+    }
+    QString error;
+    const QStringList files = exportFigures(folder, &error);
+    status_->setText(error.isEmpty() ? tr("%1 files written into %2").arg(files.size()).arg(folder)
+                                     : error);
+}
+
+void StudyWindow::openRecommended() {
+    const QString path = QDir(folder_).filePath(QStringLiteral("recommended.json"));
+    if (QFileInfo::exists(path)) {
+        emit openExperimentRequested(path);
+    }
+}
+
+} // namespace grainlab::ui
