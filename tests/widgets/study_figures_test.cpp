@@ -51,7 +51,11 @@ TEST(StudyFigures, ErrorAgainstCostDrawsOnePointPerSettingOverTheNoiseBand) {
     ASSERT_EQ(plot.points.size(), 3u);
     EXPECT_TRUE(plot.xAxis.logarithmic);
     EXPECT_TRUE(plot.yAxis.logarithmic);
-    EXPECT_TRUE(plot.points[1].highlighted);
+    // The reference is drawn last (a cost-only knob's point would hide it otherwise).
+    EXPECT_EQ(plot.points[0].label, "a");
+    EXPECT_EQ(plot.points[1].label, "b");
+    EXPECT_EQ(plot.points[2].label, "ref");
+    EXPECT_TRUE(plot.points[0].highlighted); // the recommendation
 
     const QSize size(800, 600);
     QImage image(size, QImage::Format_ARGB32);
@@ -71,10 +75,11 @@ TEST(StudyFigures, ErrorAgainstCostDrawsOnePointPerSettingOverTheNoiseBand) {
         EXPECT_EQ(plot.pointAt(QPointF(at) + QPointF(2, 1), rect), int(k));
     }
     // Within tolerance green, outside red, the reference dark.
-    EXPECT_GT(plot.points[1].colour.green(), plot.points[1].colour.red());
-    EXPECT_GT(plot.points[2].colour.red(), plot.points[2].colour.green());
+    EXPECT_GT(plot.points[0].colour.green(), plot.points[0].colour.red());
+    EXPECT_GT(plot.points[1].colour.red(), plot.points[1].colour.green());
+    EXPECT_LT(plot.points[2].colour.lightness(), 80);
     // The noise band: grey behind the plot below the noise level, white above it.
-    const double x = plot.points[0].x;
+    const double x = plot.points[2].x;
     const QColor inBand = image.pixelColor(plot.toPixel(x * 0.8, 0.003, rect).toPoint());
     const QColor above = image.pixelColor(plot.toPixel(x * 0.8, 0.02, rect).toPoint());
     EXPECT_LT(inBand.red(), 245) << inBand.name().toStdString();

@@ -204,6 +204,7 @@ void PlotPainter::paint(QPainter& painter, const QRectF& rect) const {
     const auto lowEnd = [](double v, double e, bool logarithmic, double axisLow) {
         return logarithmic && v - e <= 0 ? std::pow(10.0, axisLow) : v - e;
     };
+    std::vector<QRectF> labels;
     for (const PlotPoint& p : points) {
         painter.setPen(QPen(p.colour.darker(130), 1.2));
         if (p.yError > 0) {
@@ -231,8 +232,20 @@ void PlotPainter::paint(QPainter& painter, const QRectF& rect) const {
             painter.drawEllipse(c, r + 3, r + 3);
         }
         if (!p.label.isEmpty()) {
+            // Labels of points that nearly coincide are stacked, not drawn over each other.
+            QRectF box(c + QPointF(r + 4, -r - 2 - metrics.ascent()),
+                       QSizeF(metrics.horizontalAdvance(p.label), metrics.height()));
+            for (int tries = 0; tries < 8; ++tries) {
+                const bool clash = std::any_of(labels.begin(), labels.end(),
+                                               [&](const QRectF& l) { return l.intersects(box); });
+                if (!clash) {
+                    break;
+                }
+                box.translate(0, metrics.height());
+            }
+            labels.push_back(box);
             painter.setPen(QColor(40, 40, 40));
-            painter.drawText(c + QPointF(r + 4, -r - 2), p.label);
+            painter.drawText(QPointF(box.left(), box.top() + metrics.ascent()), p.label);
         }
     }
     painter.setClipping(false);

@@ -86,6 +86,11 @@ PlotPainter errorCostPlot(const StudySpec& spec, const StudyPlan& plan, const St
         p.highlighted = summary.recommended == s.setting;
         plot.points.push_back(p);
     }
+    // The reference last, so that a setting with the same error and cost (a cost-only knob)
+    // does not hide it.
+    std::stable_partition(plot.points.begin(), plot.points.end(), [&](const PlotPoint& p) {
+        return p.label != q(plan.settings.front().id);
+    });
     if (tol != spec.tolerances.end() && !tol->second.relative) {
         plot.bands.push_back({tol->second.value * 0.995, tol->second.value * 1.005,
                               QObject::tr("tolerance"), QColor(44, 160, 44, 160)});
