@@ -1,6 +1,6 @@
 #pragma once
-// Small real scenes for the widget tests: a grid assembly compacted for a few thousand steps by
-// the engine, turned into a Snapshot (grains, contacts, void cells, a synthetic series). Built
+// Small real scenes for the widget tests: the shared compacted scene (engine/scenes), turned
+// into a Snapshot (grains, contacts, void cells, a synthetic series). Built
 // once per test binary on the test's thread.
 
 #include <cmath>
@@ -8,37 +8,28 @@
 #include <memory>
 
 #include "grainlab/assembly.h"
+#include "grainlab/scenes/compacted_scene.h"
 #include "grainlab/simulation.h"
 #include "grainlab/snapshot.h"
 #include "grainlab/void_cells.h"
 
 namespace grainlab::testing {
 
-/// A snapshot of `grains` ovals compacted isotropically for `steps` steps.
-/// Compaction stops early once the mean coordination exceeds 3.4 (a dense, connected network).
+/// A snapshot of `grains` ovals compacted isotropically to 100 kPa by the shared compacted scene
+/// (the experiment runner's equilibrium rule), at most `steps` steps.
 inline SnapshotPtr makeCompactedSnapshot(int grains = 150, std::int64_t steps = 200000) {
-    AssemblySpec spec;
-    spec.grainCount = grains;
+    scenes::CompactedSceneSpec spec;
+    spec.grains = grains;
     spec.widths = evenlySpacedWidths(1e-3, 2e-3, 5);
     spec.aspectRatio = 0.6;
     spec.seed = 7;
-    SimulationParameters parameters;
-    parameters.friction = 0.3;
-    parameters.servo.maxStrainRate = 20.0;
-    const SimulationState initial = generateGridAssembly(spec, parameters);
-    Simulation sim(initial);
-    const AxisControl servo{AxisMode::Stress, 0.0, 1e5};
-    sim.setAxisControl(0, servo);
-    sim.setAxisControl(1, servo);
-    for (std::int64_t done = 0; done < steps; done += 1000) {
-        sim.advance(1000);
-        if (2.0 * double(sim.contactCount()) > 3.4 * grains && sim.stress().s11 > 5e4) {
-            break;
-        }
-    }
+    spec.friction = 0.3;
+    spec.pressure = 1e5;
+    spec.criterion.maxSteps = steps;
+    const scenes::CompactedScene scene = scenes::compactScene(spec);
 
     auto s = std::make_shared<Snapshot>();
-    fillSnapshotScene(*s, sim, initial.grains.theta);
+    fillSnapshotScene(*s, scene.simulation, scene.initialTheta);
     s->stage = "compaction 100 kPa";
     s->test = "compaction";
     return s;
