@@ -30,6 +30,7 @@
 #include "grainlab/ui/parameters_panel.h"
 #include "grainlab/ui/scene_options_bar.h"
 #include "grainlab/ui/scene_view.h"
+#include "gui/duration_text.h"
 #include "gui/edited_experiment.h"
 #include "gui/study_window.h"
 #include "gui/window_run_folder.h"
@@ -42,20 +43,6 @@ namespace {
 /// shares, so no faster than needed.
 constexpr int kFrameMs = 33;
 constexpr int kChartPeriodMs = 150; ///< charts are replotted at most this often while running
-
-QString formatDuration(double seconds) {
-    if (seconds < 0.0 || !std::isfinite(seconds)) {
-        return QStringLiteral("–");
-    }
-    const auto s = static_cast<qint64>(seconds + 0.5);
-    if (s >= 3600) {
-        return QStringLiteral("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60);
-    }
-    if (s >= 60) {
-        return QStringLiteral("%1 min %2 s").arg(s / 60).arg(s % 60);
-    }
-    return QStringLiteral("%1 s").arg(s);
-}
 
 QString stateName(RunState state) {
     switch (state) {

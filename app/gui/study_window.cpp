@@ -25,6 +25,7 @@
 #include "grainlab/study_file.h"
 #include "grainlab/ui/plot_view.h"
 #include "grainlab/ui/study_figures.h"
+#include "gui/duration_text.h"
 
 namespace grainlab::ui {
 namespace {
@@ -33,20 +34,6 @@ constexpr int kPollMs = 1000; ///< how often the folder is read while the study 
 
 QString q(const std::string& s) {
     return QString::fromStdString(s);
-}
-
-QString formatDuration(double seconds) {
-    if (seconds < 0.0 || !std::isfinite(seconds)) {
-        return QStringLiteral("–");
-    }
-    const auto s = static_cast<qint64>(seconds + 0.5);
-    if (s >= 3600) {
-        return QStringLiteral("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60);
-    }
-    if (s >= 60) {
-        return QStringLiteral("%1 min %2 s").arg(s / 60).arg(s % 60);
-    }
-    return QStringLiteral("%1 s").arg(s);
 }
 
 QString number(double v) {

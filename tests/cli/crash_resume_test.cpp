@@ -21,6 +21,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_test_files.h"
 #include "grainlab/csv_series.h"
 #include "grainlab/run_file.h"
 #include "grainlab/simulation_state.h"
@@ -30,12 +31,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::readText;
 
 /// Two compaction stages of 200 ovals from the grid, two shear tests with friction 0.5 to
 /// 0.3 %: about 71,000 steps (a second or two).

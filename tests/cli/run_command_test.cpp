@@ -18,6 +18,7 @@
 
 #include <H5Cpp.h>
 
+#include "cli_test_files.h"
 #include "cli/run_command.h"
 #include "cli/run_output.h"
 #include "grainlab/csv_series.h"
@@ -39,12 +40,7 @@ fs::path freshFolder(const std::string& name) {
     return p;
 }
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::readText;
 
 /// A tiny experiment: the quick protocol cut to one pressure and a short shear.
 nlohmann::json tinyExperiment() {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "cli_test_files.h"
 #include "cli/run_cost.h"
 
 namespace grainlab {
@@ -17,20 +18,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::readText;
 
-fs::path freshFolder(const std::string& name) {
-    const fs::path p =
-        fs::temp_directory_path() / fmt::format("grainlab-test-cost-{}-{}", name, getpid());
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
+fs::path freshFolder(const std::string& name) { return test::freshFolder("cost", name); }
 
 /// 120 grains, one pressure, a short shear.
 fs::path tinyExperiment(const fs::path& folder) {

@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_test_files.h"
 #include "grainlab/run_file.h"
 
 namespace grainlab {
@@ -26,20 +27,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::readText;
 
-fs::path freshFolder(const std::string& name) {
-    const fs::path p =
-        fs::temp_directory_path() / fmt::format("grainlab-test-folder-{}-{}", name, getpid());
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
+fs::path freshFolder(const std::string& name) { return test::freshFolder("folder", name); }
 
 /// 120 grains, one pressure, a short shear: a couple of seconds.
 fs::path writeTinyExperiment(const fs::path& folder, double targetStrain = 0.002) {

@@ -253,11 +253,21 @@ TEST(StudyCommand, AKilledStudyResumesWithoutRedoingFinishedRuns) {
     while (finished() < 2 && std::chrono::steady_clock::now() < deadline) {
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
-    const std::vector<pid_t> running = childrenOf(study);
-    ::kill(study, SIGKILL);
-    for (pid_t child : running) {
+    // Stopped first, so that it starts no run between the listing of its runs and the kill.
+    ::kill(study, SIGSTOP);
+    const auto stopped = [&] {
+        std::istringstream stat(text(fs::path("/proc") / std::to_string(study) / "stat"));
+        std::string pid, comm, state;
+        stat >> pid >> comm >> state;
+        return state == "T";
+    };
+    while (!stopped()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    for (pid_t child : childrenOf(study)) {
         ::kill(child, SIGKILL);
     }
+    ::kill(study, SIGKILL);
     int status = 0;
     ::waitpid(study, &status, 0);
     ASSERT_GE(finished(), 2);
