@@ -1,5 +1,6 @@
 // Experiment file: the shipped presets parse to SPEC §1, and every kind of bad input is refused
 // with an error naming the file, the key path, the value and what is allowed.
+#include "experiment_fixtures.h"
 #include "grainlab/experiment_file.h"
 
 #include <cstdio>
@@ -16,18 +17,7 @@ namespace {
 
 using Json = nlohmann::json;
 
-/// The smallest valid file: only the required keys.
-Json minimalExperiment() {
-    return Json::parse(R"({
-        "seed": 7,
-        "grains": {"count": 50, "width_min": 1.0e-3, "width_max": 2.0e-3, "size_classes": 3,
-                   "aspect_ratio": 0.6},
-        "material": {"normal_stiffness": 1e8, "tangential_stiffness": 1e8, "density": 2650},
-        "time_step": 1e-6,
-        "compaction": {"pressures": [15e3, 25e3]},
-        "shear": {"target_axial_strain": 0.1}
-    })");
-}
+using test::minimalExperiment;
 
 /// Parses `j` as "bad.json" and checks the error's key path and that its message holds each of
 /// `fragments` (and the file name).

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "experiment_fixtures.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_limits.h"
 
@@ -16,17 +17,7 @@ namespace {
 
 using Json = nlohmann::json;
 
-Json minimalExperiment() {
-    return Json::parse(R"({
-        "seed": 7,
-        "grains": {"count": 50, "width_min": 1.0e-3, "width_max": 2.0e-3, "size_classes": 3,
-                   "aspect_ratio": 0.6},
-        "material": {"normal_stiffness": 1e8, "tangential_stiffness": 1e8, "density": 2650},
-        "time_step": 1e-6,
-        "compaction": {"pressures": [15e3, 25e3]},
-        "shear": {"target_axial_strain": 0.1}
-    })");
-}
+using test::minimalExperiment;
 
 /// The engine tests trap floating-point exceptions (tests/engine/main.cpp); the reader finds a
 /// non-finite derived quantity by computing it, so the traps are off while it reads.

@@ -21,6 +21,7 @@
 #include "grainlab/run_file.h"
 #include "grainlab/simulation.h"
 #include "grainlab/void_cells.h"
+#include "scenes.h"
 
 namespace grainlab {
 namespace {
@@ -36,30 +37,12 @@ fs::path scratch(const std::string& name) {
 }
 
 std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    return test::slurp(path.string());
 }
 
 /// A frictional assembly of 40 grains after some steps: contacts with tangential history.
 SimulationState steppedState() {
-    AssemblySpec spec;
-    spec.grainCount = 40;
-    spec.widths = evenlySpacedWidths(1.0e-3, 2.0e-3, 3);
-    spec.aspectRatio = 0.6;
-    spec.gap = 0.02;
-    spec.seed = 5;
-    SimulationParameters p;
-    p.friction = 0.5;
-    p.threads = 1;
-    p.servo.maxStrainRate = 100.0;
-    SimulationState s = generateGridAssembly(spec, p);
-    s.axes[0] = {AxisMode::Strain, 300.0, 0.0, 0.0};
-    s.axes[1] = {AxisMode::Stress, 0.0, 2.0e4, 0.0};
-    Simulation sim(std::move(s));
-    sim.advance(600);
-    return sim.state();
+    return test::squeezedAssembly(40, 5, 600).state();
 }
 
 /// Everything the readers give for a run file, flattened to text and bits for comparison.

@@ -1,6 +1,7 @@
 // Output files: the HDF5 run file (state round trip bit for bit, restart continues bit for bit,
 // series, checkpoints, refusal of NaN, readable by h5dump) and the CSV series.
 #include "grainlab/run_file.h"
+#include "scenes.h"
 
 #include <algorithm>
 #include <bit>
@@ -43,33 +44,11 @@ private:
     fs::path dir_;
 };
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+Simulation squeezedAssembly() {
+    return test::squeezedAssembly(64, 11, 800);
 }
 
-/// A small frictional assembly squeezed until its grains touch, so that contacts carry
-/// tangential history, velocities and spins are non-zero, and a servo integral is running.
-Simulation squeezedAssembly() {
-    AssemblySpec spec;
-    spec.grainCount = 64;
-    spec.widths = evenlySpacedWidths(1.0e-3, 2.0e-3, 3);
-    spec.aspectRatio = 0.6;
-    spec.gap = 0.02;
-    spec.seed = 11;
-    SimulationParameters p;
-    p.friction = 0.5;
-    p.threads = 1;
-    p.servo.maxStrainRate = 100.0;
-    SimulationState s = generateGridAssembly(spec, p);
-    s.axes[0] = {AxisMode::Strain, 300.0, 0.0, 0.0};
-    s.axes[1] = {AxisMode::Stress, 0.0, 2.0e4, 0.0};
-    Simulation sim(std::move(s));
-    sim.advance(800);
-    return sim;
-}
+using test::slurp;
 
 std::uint64_t bits(double x) {
     return std::bit_cast<std::uint64_t>(x);

@@ -1,6 +1,10 @@
 #pragma once
 // Small scenes for the engine tests, each built in a few lines.
 
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -83,5 +87,35 @@ inline Simulation compactedPacking(int count, double aspect, std::uint64_t seed,
 /// A dense frictionless-compacted assembly at 100 kPa (computed once per aspect ratio and
 /// test binary): `count` grains, velocities cleared.
 SimulationState denseAssembly(int count, double aspect);
+
+/// A small frictional assembly squeezed (axial strain rate, lateral servo) until its grains
+/// touch, so that contacts carry tangential history, velocities and spins are non-zero, and a
+/// servo integral is running: the checkpoint and restart tests' state.
+inline Simulation squeezedAssembly(int grains, std::uint64_t seed, std::int64_t steps) {
+    AssemblySpec spec;
+    spec.grainCount = grains;
+    spec.widths = evenlySpacedWidths(1.0e-3, 2.0e-3, 3);
+    spec.aspectRatio = 0.6;
+    spec.gap = 0.02;
+    spec.seed = seed;
+    SimulationParameters p;
+    p.friction = 0.5;
+    p.threads = 1;
+    p.servo.maxStrainRate = 100.0;
+    SimulationState s = generateGridAssembly(spec, p);
+    s.axes[0] = {AxisMode::Strain, 300.0, 0.0, 0.0};
+    s.axes[1] = {AxisMode::Stress, 0.0, 2.0e4, 0.0};
+    Simulation sim(std::move(s));
+    sim.advance(steps);
+    return sim;
+}
+
+/// The whole content of a file (binary).
+inline std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
 
 } // namespace grainlab::test
