@@ -9,7 +9,6 @@
 #include "cli/atomic_file.h"
 #include "cli/run_cost.h"
 #include "grainlab/csv_series.h"
-#include "grainlab/experiment_file.h"
 #include "grainlab/run_file.h"
 
 namespace grainlab {
@@ -55,17 +54,14 @@ std::optional<RunResult> readRunResult(const std::string& runFolder, int runInde
     const std::string runFile = (fs::path(runFolder) / "run.h5").string();
     RunResult r;
     r.run = runIndex;
-    const ExperimentConfig config =
-        parseExperimentText(readExperimentText(runFile), runFile + ":/experiment");
-    // The shear tests follow the compaction series, in the order of the experiment's pressures.
-    std::size_t k = 0;
+    // Every test but the compaction's, with the confining pressure its rows carry.
     for (const std::string& test : listTests(runFile)) {
-        if (test == "compaction") {
+        SeriesTable t = readSeries(runFile, test);
+        if (t.stageKinds.empty() || t.stageKinds.front() == "compaction") {
             continue;
         }
-        r.tests.push_back(readSeries(runFile, test));
-        r.pressures.push_back(k < config.shear.pressures.size() ? config.shear.pressures[k] : 0.0);
-        ++k;
+        r.pressures.push_back(t.stagePressures.front());
+        r.tests.push_back(std::move(t));
     }
     r.cost.wallSeconds = cost.wallSeconds;
     r.cost.cpuSeconds = cost.cpuSeconds;

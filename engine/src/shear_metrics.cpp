@@ -6,11 +6,15 @@
 namespace grainlab {
 namespace {
 
-/// Rows of the shear stage (the runner names them "shear <pressure>").
+/// Rows of the shear stage: by each row's stage kind (the runner and the run file record it);
+/// a table without them (read from CSV) by the stage name, "shear <pressure>".
 std::vector<std::size_t> shearRows(const SeriesTable& t) {
+    const bool identified = t.stageKinds.size() == t.rows.size();
     std::vector<std::size_t> rows;
-    for (std::size_t k = 0; k < t.rows.size() && k < t.stages.size(); ++k) {
-        if (t.stages[k].rfind("shear", 0) == 0) {
+    for (std::size_t k = 0; k < t.rows.size(); ++k) {
+        const bool shear = identified ? t.stageKinds[k] == "shear"
+                                      : k < t.stages.size() && t.stages[k].rfind("shear", 0) == 0;
+        if (shear) {
             rows.push_back(k);
         }
     }

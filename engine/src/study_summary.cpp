@@ -115,10 +115,12 @@ StudySummary summariseStudy(const StudySpec& spec, const StudyPlan& plan,
     for (const std::string& test : summary.tests) {
         grids[test] =
             reach[test] > 0 ? evenlySpaced(0.0, reach[test], curveGrid) : std::vector<double>{};
-        refQ[test] = meanOf(curvesOf(reference, test, "q_over_p"), grids[test]);
-        refV[test] = meanOf(curvesOf(reference, test, "epsv"), grids[test]);
-        noiseQ[test] = curveNoise(curvesOf(reference, test, "q_over_p"), grids[test]);
-        noiseV[test] = curveNoise(curvesOf(reference, test, "epsv"), grids[test]);
+        const std::vector<Curve> q = curvesOf(reference, test, "q_over_p");
+        const std::vector<Curve> v = curvesOf(reference, test, "epsv");
+        refQ[test] = meanOf(q, grids[test]);
+        refV[test] = meanOf(v, grids[test]);
+        noiseQ[test] = curveNoise(q, grids[test]);
+        noiseV[test] = curveNoise(v, grids[test]);
     }
 
     // Every run's metrics (curve metrics against the reference mean, on its test's grid).

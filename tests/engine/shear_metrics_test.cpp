@@ -86,6 +86,17 @@ TEST(ShearMetrics, StrainsNotReachedAndMissingShearAreLeftEmpty) {
     EXPECT_DOUBLE_EQ(*none.voidRatioAtStart, 0.2);
 }
 
+TEST(ShearMetrics, TheRowsStageKindDecidesWhatIsShearWhereTheTableHasIt) {
+    SeriesTable t = syntheticTest();
+    // As the runner and the run file record them: the first row re-equilibration, then shear.
+    t.stageKinds.assign(t.rows.size(), "shear");
+    t.stageKinds[0] = "equilibration";
+    EXPECT_DOUBLE_EQ(*shearMetrics(t, 1e5).peakStressRatio, 0.5);
+    // The kind, not the name, counts: call the first row shear, and its q/p of 5 is the peak.
+    t.stageKinds[0] = "shear";
+    EXPECT_DOUBLE_EQ(*shearMetrics(t, 1e5).peakStressRatio, 5.0);
+}
+
 TEST(ShearMetrics, NamedMetricsCarryEveryValueWithItsUnit) {
     const ShearMetrics m = shearMetrics(syntheticTest(), 1e5);
     const auto named = namedMetrics(m);
