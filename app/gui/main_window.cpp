@@ -446,9 +446,14 @@ void MainWindow::refresh() {
         }
     }
     // The charts follow the live run to the page of its stage (compaction, then the shear
-    // tests) when the stage changes page; the user may pick the other page in between.
-    if (!viewingFile_ && (status.state == RunState::Running || status.state == RunState::Paused)) {
-        const QString page = charts_->pageOfStage(status.progress.stage);
+    // tests) when the stage changes page, also when the run ended between two refreshes; the
+    // user may pick the other page in between.
+    if (!viewingFile_ && (status.state == RunState::Running || status.state == RunState::Paused ||
+                          status.state == RunState::Finished)) {
+        // A finished run ("done") ends on its results: the first page, the shear tests.
+        const QString page = status.state == RunState::Finished
+                                 ? charts_->pages().value(0)
+                                 : charts_->pageOfStage(status.progress.stage);
         if (!page.isEmpty() && page != chartedPage_) {
             chartedPage_ = page;
             charts_->showPage(page);
