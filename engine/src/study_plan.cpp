@@ -175,14 +175,27 @@ std::string applySetting(const std::string& baseText, const std::string& baseSou
         const ExperimentConfig c = parseExperimentText(probe.dump(), baseSource);
         double dt = c.parameters.timeStep;
         if (fraction != levels.end()) {
+            const double baseStep = OrderedJson::parse(baseText).at("time_step").get<double>();
             dt = fraction->second.number * criticalTimeStep(shapesOf(c), c.parameters).limit;
             j["time_step"] = dt;
             if (!levels.count(KnobKind::AxialStrainPerStep) && inertial == levels.end()) {
                 // The loading rate is physics, the time step numerics: keep the strain rate
                 // (per second) of the base, so the strain per step scales with the step.
-                const double baseStep = OrderedJson::parse(baseText).at("time_step").get<double>();
                 child(j, "shear")["axial_strain_per_step"] =
                     c.shear.axialStrainPerStep * dt / baseStep;
+            }
+            if (dt < baseStep) {
+                // A stage's step cap is a duration: a smaller step gets as much physical time
+                // (more steps) to reach equilibrium as the base gives; a larger one keeps the
+                // base's cap.
+                const double stretch = baseStep / dt;
+                const auto stretchCap = [&](OrderedJson& criterion, std::int64_t cap) {
+                    criterion["max_steps"] =
+                        static_cast<std::int64_t>(std::ceil(double(cap) * stretch));
+                };
+                stretchCap(child(child(j, "compaction"), "criterion"),
+                           c.compaction.criterion.maxSteps);
+                stretchCap(child(child(j, "shear"), "equilibration"), c.shear.equilibration.maxSteps);
             }
         }
         if (inertial != levels.end()) {

@@ -72,6 +72,14 @@ TEST(StudyPlan, OneAtATimeIsTheReferenceAndEachLevelOfEachKnob) {
     EXPECT_DOUBLE_EQ(half.shear.axialStrainPerStep / half.parameters.timeStep,
                      base.shear.axialStrainPerStep / base.parameters.timeStep);
     EXPECT_EQ(half.parameters.damping.kind, base.parameters.damping.kind);
+    // A smaller step than the base's gets the same physical time to reach equilibrium: the
+    // stages' step caps grow by the base's step over the setting's (never shrink).
+    const double stretch = base.parameters.timeStep / half.parameters.timeStep;
+    ASSERT_GT(stretch, 1.0); // half the limit is below the quick experiment's 1e-6 s
+    EXPECT_EQ(half.compaction.criterion.maxSteps,
+              std::int64_t(std::ceil(double(base.compaction.criterion.maxSteps) * stretch)));
+    EXPECT_EQ(half.shear.equilibration.maxSteps,
+              std::int64_t(std::ceil(double(base.shear.equilibration.maxSteps) * stretch)));
     const ExperimentConfig undamped = parseExperimentText(plan.runs[7].experimentText, "none");
     EXPECT_EQ(undamped.parameters.damping.kind, DampingKind::None);
     EXPECT_EQ(undamped.parameters.timeStep, base.parameters.timeStep);

@@ -1,0 +1,121 @@
+#pragma once
+// The numbers behind the reference study's figure set (`grainlab report`): every figure's
+// curves or points as means over the runs (seeds) with their ±1σ band, the pooled fit of Z_eff
+// on N_v/N_vi, and the headline numbers per confining pressure with their scatter, set beside
+// the values the published study states. Plain computation over recorded series (the shear rows
+// of each test, as shear_metrics.h takes them): no Qt, no files, any thread. The report command
+// writes these as CSV and draws them; the tests check them against hand computations.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grainlab/series.h"
+#include "grainlab/statistics.h"
+
+namespace grainlab {
+
+/// One run of the experiment: the series of its shear tests.
+struct ReportRun {
+    std::string name;              ///< e.g. the run folder's name
+    std::vector<SeriesTable> tests; ///< one table per shear test
+    std::vector<double> pressures;  ///< the confining pressure of each test [Pa]
+};
+
+/// One line (or set of points) of a figure: a test's mean over the runs, with the sample
+/// standard deviation at each point.
+struct ReportLine {
+    std::string label;    ///< e.g. "15 kPa", "strong contacts"
+    std::string test;     ///< e.g. "p015kPa" ("" for a line over every test)
+    double pressure = 0;  ///< [Pa] (0 for a line over every test)
+    std::vector<double> x, y, sd; ///< sd: of y over the runs (0 with one run)
+    std::vector<double> xSd;      ///< of x over the runs, for lines of one series against another
+    std::vector<int> runs;        ///< runs that reach each point
+    bool points = false;          ///< drawn as markers with error bars, not as a line
+    /// Further columns for the CSV only (e.g. the unsmoothed dilatancy index), one value per point.
+    std::vector<std::pair<std::string, std::vector<double>>> extra;
+};
+
+/// y = slope x + intercept by least squares, with the coefficient of determination.
+struct LinearFit {
+    double slope = 0;
+    double intercept = 0;
+    double r2 = 0;       ///< 1 - SS_res / SS_tot
+    std::size_t count = 0; ///< points fitted
+};
+/// The least-squares line through (x[k], y[k]); nothing for fewer than two distinct x.
+std::optional<LinearFit> fitLine(const std::vector<double>& x, const std::vector<double>& y);
+
+struct ReportFigure {
+    std::string name;     ///< the file stem, e.g. "01_q_over_p"
+    std::string title;
+    std::string xColumn;  ///< the series column on x ("eps1", ...; "pressure" for figure 2)
+    std::string xLabel;   ///< with its unit, e.g. "ε1 [-]"
+    std::string yColumn;
+    std::string yLabel;
+    std::vector<ReportLine> lines;
+    std::optional<LinearFit> fit; ///< drawn as a line with its equation (figure 6)
+    std::string note;             ///< a sentence for the report (e.g. the smoothing window)
+};
+
+/// How the figures sample the curves.
+struct ReportOptions {
+    int gridPoints = 201;       ///< points of the common eps1 axis
+    double dilatancyWindow = 0.005; ///< the eps1 window of the smoothed dilatancy index [-]
+};
+
+/// The figures of the reference study, in the report's order (1 to 8 of docs/report.md;
+/// figure 5, the void-cell pictures, is drawn from checkpoints and is not part of this list).
+std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
+                                        const ReportOptions& options = {});
+
+/// One headline number at one confining pressure, over the runs.
+struct HeadlineValue {
+    std::string test;
+    double pressure = 0; ///< [Pa]
+    Scatter value;       ///< mean ± sd over the runs that have it (count 0: none has)
+};
+
+/// A published value to compare with: an equality (0.126) or an upper bound (< 0.4).
+struct PublishedValue {
+    double value = 0;
+    bool upperBound = false;
+    std::string text; ///< as the study states it, e.g. "0.126", "< 0.4 %"
+};
+
+/// How a measured value compares with the published one.
+struct Comparison {
+    double difference = 0;     ///< measured mean - published value
+    bool agrees = false;       ///< bound: mean below it; value: |difference| <= 2 sd
+    bool beyondScatter = false; ///< |difference| > 2 sd of the runs (always with one run)
+};
+Comparison compare(const Scatter& measured, const PublishedValue& published);
+
+struct HeadlineRow {
+    std::string key;   ///< e.g. "e_compacted"
+    std::string label; ///< e.g. "e after compaction"
+    std::string unit;  ///< e.g. "-", "deg", "%"
+    std::vector<HeadlineValue> values; ///< one per test, in pressure order
+    std::optional<PublishedValue> published;
+};
+
+/// The table of headline numbers: e after compaction, peak q/p, phi and eps1 at the peak, eps_v
+/// at 10 %, Z_eff - Z averaged over shear, N_v/N_vi at 10 %, the slope and intercept of the fit
+/// of Z_eff on N_v/N_vi (per test, over its shear records), the mean I_uf during shear and the
+/// largest lateral-stress error; with the published values where the study states one.
+std::vector<HeadlineRow> headlineTable(const std::vector<ReportRun>& runs);
+
+/// The pooled fit of Z_eff on N_v/N_vi of each run (every shear record of every test), as the
+/// scatter over runs of its slope, intercept and R².
+struct PooledFitScatter {
+    Scatter slope, intercept, r2;
+};
+PooledFitScatter pooledFitOverRuns(const std::vector<ReportRun>& runs);
+
+/// The published study's statements the report compares with.
+inline constexpr double kPublishedVoidRatio = 0.126;       ///< after compaction, every pressure
+inline constexpr double kPublishedFitSlope = 3.45;         ///< Z_eff = 3.45 N_v/N_vi + 2.1
+inline constexpr double kPublishedFitIntercept = 2.1;
+inline constexpr double kPublishedUnbalancedForceMax = 0.4; ///< mean I_uf during shear < 0.4 %
+
+} // namespace grainlab

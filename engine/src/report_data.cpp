@@ -1,0 +1,473 @@
+#include "grainlab/report_data.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include <fmt/format.h>
+
+#include "grainlab/shear_metrics.h"
+
+namespace grainlab {
+namespace {
+
+struct TestKey {
+    std::string test;
+    double pressure = 0;
+};
+
+/// Every test of the runs (by name), in the order of their confining pressures.
+std::vector<TestKey> testsOf(const std::vector<ReportRun>& runs) {
+    std::vector<TestKey> keys;
+    for (const ReportRun& r : runs) {
+        for (std::size_t t = 0; t < r.tests.size(); ++t) {
+            const std::string& name = r.tests[t].test;
+            const bool known = std::any_of(keys.begin(), keys.end(),
+                                           [&](const TestKey& k) { return k.test == name; });
+            if (!known) {
+                keys.push_back({name, t < r.pressures.size() ? r.pressures[t] : 0.0});
+            }
+        }
+    }
+    std::stable_sort(keys.begin(), keys.end(),
+                     [](const TestKey& a, const TestKey& b) { return a.pressure < b.pressure; });
+    return keys;
+}
+
+std::string pressureLabel(double pressure) { return fmt::format("{:g} kPa", pressure / 1e3); }
+
+/// The table of test `test` in each run that has it with shear rows, with its pressure.
+std::vector<std::pair<const SeriesTable*, double>> tablesOf(const std::vector<ReportRun>& runs,
+                                                            const std::string& test) {
+    std::vector<std::pair<const SeriesTable*, double>> out;
+    for (const ReportRun& r : runs) {
+        for (std::size_t t = 0; t < r.tests.size(); ++t) {
+            if (r.tests[t].test == test && !shearCurve(r.tests[t], "eps1").x.empty()) {
+                out.emplace_back(&r.tests[t], t < r.pressures.size() ? r.pressures[t] : 0.0);
+            }
+        }
+    }
+    return out;
+}
+
+/// Each run's curve of `column` against eps1 for test `test` (runs without it left out).
+std::vector<Curve> curvesOf(const std::vector<ReportRun>& runs, const std::string& test,
+                            const std::string& column) {
+    std::vector<Curve> curves;
+    for (const auto& [table, pressure] : tablesOf(runs, test)) {
+        Curve c = shearCurve(*table, column);
+        if (!c.x.empty()) {
+            curves.push_back(std::move(c));
+        }
+    }
+    return curves;
+}
+
+/// The common eps1 axis of `curves`: from the smallest first to the largest last strain.
+std::vector<double> gridOf(const std::vector<Curve>& curves, int points) {
+    double lo = 0, hi = 0;
+    bool first = true;
+    for (const Curve& c : curves) {
+        lo = first ? c.x.front() : std::min(lo, c.x.front());
+        hi = first ? c.x.back() : std::max(hi, c.x.back());
+        first = false;
+    }
+    if (first || !(hi > lo)) {
+        return first ? std::vector<double>{} : std::vector<double>{lo};
+    }
+    return evenlySpaced(lo, hi, std::max(points, 2));
+}
+
+/// The band's value at each point of `grid` (the band holds the grid points some curve reaches,
+/// in order): index into the band, or -1.
+std::vector<int> onGrid(const CurveBand& band, const std::vector<double>& grid) {
+    std::vector<int> at(grid.size(), -1);
+    std::size_t b = 0;
+    for (std::size_t k = 0; k < grid.size() && b < band.x.size(); ++k) {
+        if (band.x[b] == grid[k]) {
+            at[k] = int(b++);
+        }
+    }
+    return at;
+}
+
+/// A line of mean ± sd at the grid points that at least one run reaches.
+ReportLine bandLine(const CurveBand& band, const TestKey& key) {
+    ReportLine line;
+    line.label = pressureLabel(key.pressure);
+    line.test = key.test;
+    line.pressure = key.pressure;
+    line.x = band.x;
+    line.y = band.mean;
+    line.sd = band.sd;
+    line.runs = band.count;
+    return line;
+}
+
+ReportLine strainLine(const std::vector<ReportRun>& runs, const TestKey& key,
+                      const std::string& column, const ReportOptions& options) {
+    const std::vector<Curve> curves = curvesOf(runs, key.test, column);
+    return bandLine(meanCurve(curves, gridOf(curves, options.gridPoints)), key);
+}
+
+/// `yColumn` against `xColumn`, both taken as the mean over runs at each eps1 of the grid.
+ReportLine parametricLine(const std::vector<ReportRun>& runs, const TestKey& key,
+                          const std::string& xColumn, const std::string& yColumn,
+                          const ReportOptions& options) {
+    const std::vector<Curve> xs = curvesOf(runs, key.test, xColumn);
+    const std::vector<Curve> ys = curvesOf(runs, key.test, yColumn);
+    const std::vector<double> grid = gridOf(ys, options.gridPoints);
+    const CurveBand bx = meanCurve(xs, grid), by = meanCurve(ys, grid);
+    const std::vector<int> ix = onGrid(bx, grid), iy = onGrid(by, grid);
+    ReportLine line;
+    line.label = pressureLabel(key.pressure);
+    line.test = key.test;
+    line.pressure = key.pressure;
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+        if (ix[k] >= 0 && iy[k] >= 0) {
+            const std::size_t a = std::size_t(ix[k]), b = std::size_t(iy[k]);
+            line.x.push_back(bx.mean[a]);
+            line.xSd.push_back(bx.sd[a]);
+            line.y.push_back(by.mean[b]);
+            line.sd.push_back(by.sd[b]);
+            line.runs.push_back(by.count[b]);
+        }
+    }
+    return line;
+}
+
+/// -d eps_v / d eps1 by a central difference over `window` of eps1, on `grid` (where the
+/// window lies within the curve).
+Curve smoothedDilatancy(const Curve& epsv, const std::vector<double>& grid, double window) {
+    Curve out;
+    for (double x : grid) {
+        const auto above = valueAt(epsv, x + window / 2), below = valueAt(epsv, x - window / 2);
+        if (above && below) {
+            out.x.push_back(x);
+            out.y.push_back(-(*above - *below) / window);
+        }
+    }
+    return out;
+}
+
+ReportLine dilatancyLine(const std::vector<ReportRun>& runs, const TestKey& key,
+                         const ReportOptions& options) {
+    const std::vector<Curve> epsv = curvesOf(runs, key.test, "epsv");
+    const std::vector<Curve> raw = curvesOf(runs, key.test, "DI");
+    const std::vector<double> grid = gridOf(epsv, options.gridPoints);
+    std::vector<Curve> smoothed;
+    for (const Curve& c : epsv) {
+        smoothed.push_back(smoothedDilatancy(c, grid, options.dilatancyWindow));
+    }
+    const CurveBand s = meanCurve(smoothed, grid), r = meanCurve(raw, grid);
+    const std::vector<int> is = onGrid(s, grid), ir = onGrid(r, grid);
+    ReportLine line;
+    line.label = pressureLabel(key.pressure);
+    line.test = key.test;
+    line.pressure = key.pressure;
+    std::vector<double> rawMean, rawSd;
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+        if (is[k] >= 0 && ir[k] >= 0) {
+            const std::size_t a = std::size_t(is[k]), b = std::size_t(ir[k]);
+            line.x.push_back(grid[k]);
+            line.y.push_back(s.mean[a]);
+            line.sd.push_back(s.sd[a]);
+            line.runs.push_back(s.count[a]);
+            rawMean.push_back(r.mean[b]);
+            rawSd.push_back(r.sd[b]);
+        }
+    }
+    line.extra = {{"DI_raw mean [-]", rawMean}, {"DI_raw sd [-]", rawSd}};
+    return line;
+}
+
+ReportFigure strainFigure(const std::vector<ReportRun>& runs, const std::vector<TestKey>& keys,
+                          std::string name, std::string title, const std::string& column,
+                          std::string yLabel, const ReportOptions& options) {
+    ReportFigure f{std::move(name), std::move(title), "eps1", "ε1 [-]", column,
+                   std::move(yLabel), {}, std::nullopt, ""};
+    for (const TestKey& key : keys) {
+        ReportLine line = strainLine(runs, key, column, options);
+        if (!line.x.empty()) {
+            f.lines.push_back(std::move(line));
+        }
+    }
+    return f;
+}
+
+/// The mean over the shear records of `a` - `b` (e.g. Z_eff - Z), or nothing.
+std::optional<double> meanDifference(const SeriesTable& t, const std::string& a,
+                                     const std::string& b) {
+    const Curve ca = shearCurve(t, a), cb = shearCurve(t, b);
+    if (ca.y.empty() || ca.y.size() != cb.y.size()) {
+        return std::nullopt;
+    }
+    double sum = 0;
+    for (std::size_t k = 0; k < ca.y.size(); ++k) {
+        sum += ca.y[k] - cb.y[k];
+    }
+    return sum / double(ca.y.size());
+}
+
+std::optional<LinearFit> fitOfTest(const SeriesTable& t) {
+    const Curve x = shearCurve(t, "Nv_over_Nvi"), y = shearCurve(t, "Z_eff");
+    return fitLine(x.y, y.y);
+}
+
+} // namespace
+
+std::optional<LinearFit> fitLine(const std::vector<double>& x, const std::vector<double>& y) {
+    const std::size_t n = std::min(x.size(), y.size());
+    if (n < 2) {
+        return std::nullopt;
+    }
+    double mx = 0, my = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        mx += x[k];
+        my += y[k];
+    }
+    mx /= double(n);
+    my /= double(n);
+    double sxx = 0, sxy = 0, syy = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        sxx += (x[k] - mx) * (x[k] - mx);
+        sxy += (x[k] - mx) * (y[k] - my);
+        syy += (y[k] - my) * (y[k] - my);
+    }
+    if (!(sxx > 0)) {
+        return std::nullopt;
+    }
+    LinearFit fit;
+    fit.slope = sxy / sxx;
+    fit.intercept = my - fit.slope * mx;
+    double residual = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double r = y[k] - (fit.slope * x[k] + fit.intercept);
+        residual += r * r;
+    }
+    fit.r2 = syy > 0 ? 1.0 - residual / syy : 1.0;
+    fit.count = n;
+    return fit;
+}
+
+std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
+                                        const ReportOptions& options) {
+    const std::vector<TestKey> keys = testsOf(runs);
+    std::vector<ReportFigure> figures;
+    const auto add = [&](ReportFigure f) { figures.push_back(std::move(f)); };
+
+    // 1. q and q/p against eps1.
+    add(strainFigure(runs, keys, "01_q", "Deviator stress", "q", "q [Pa]", options));
+    add(strainFigure(runs, keys, "01_q_over_p", "Stress ratio", "q_over_p", "q/p [-]", options));
+
+    // 2. phi at the peak of q/p against the confining pressure.
+    {
+        ReportFigure f{"02_phi_peak", "Friction angle at the peak", "pressure",
+                       "confining pressure [kPa]", "phi_deg", "φ at peak [deg]", {}, {}, ""};
+        ReportLine line;
+        line.label = "mean ± 1σ over runs";
+        line.points = true;
+        for (const TestKey& key : keys) {
+            std::vector<std::optional<double>> values;
+            for (const auto& [table, pressure] : tablesOf(runs, key.test)) {
+                values.push_back(shearMetrics(*table, pressure).peakFrictionAngle);
+            }
+            const Scatter s = scatterOf(values);
+            if (s.count > 0) {
+                line.x.push_back(key.pressure / 1e3);
+                line.y.push_back(s.mean);
+                line.sd.push_back(s.sd);
+                line.runs.push_back(s.count);
+            }
+        }
+        f.lines.push_back(std::move(line));
+        add(std::move(f));
+    }
+
+    // 3. eps_v and the dilatancy index against eps1.
+    add(strainFigure(runs, keys, "03_epsv", "Volumetric strain", "epsv", "εv [-]", options));
+    {
+        ReportFigure f{"03_DI", "Dilatancy index", "eps1", "ε1 [-]", "DI", "−dεv/dε1 [-]", {}, {},
+                       fmt::format("smoothed: central difference of εv over an ε1 window of {:g} "
+                                   "(the recorded finite difference between records is the "
+                                   "DI_raw columns of the CSV)",
+                                   options.dilatancyWindow)};
+        for (const TestKey& key : keys) {
+            ReportLine line = dilatancyLine(runs, key, options);
+            if (!line.x.empty()) {
+                f.lines.push_back(std::move(line));
+            }
+        }
+        add(std::move(f));
+    }
+
+    // 4. Z, Z_eff and S against eps1; Z and Z_eff together at the lowest and highest pressure.
+    add(strainFigure(runs, keys, "04_Z", "Coordination number", "Z", "Z [-]", options));
+    add(strainFigure(runs, keys, "04_Z_eff", "Load-bearing coordination number", "Z_eff",
+                     "Z̄ [-]", options));
+    add(strainFigure(runs, keys, "04_S", "Sliding contacts", "S", "S [-]", options));
+    {
+        ReportFigure f{"04_Z_and_Z_eff", "Z and Z̄ at the lowest and highest pressure", "eps1",
+                       "ε1 [-]", "Z", "Z, Z̄ [-]", {}, {}, ""};
+        std::vector<TestKey> ends;
+        if (!keys.empty()) {
+            ends.push_back(keys.front());
+            if (keys.size() > 1) {
+                ends.push_back(keys.back());
+            }
+        }
+        for (const TestKey& key : ends) {
+            for (const std::string column : {"Z", "Z_eff"}) {
+                ReportLine line = strainLine(runs, key, column, options);
+                line.label = fmt::format("{} {}", column == "Z" ? "Z" : "Z̄", line.label);
+                if (!line.x.empty()) {
+                    f.lines.push_back(std::move(line));
+                }
+            }
+        }
+        add(std::move(f));
+    }
+
+    // 6. N_v/N_vi against eps1; Z_eff against N_v/N_vi with the pooled fit.
+    add(strainFigure(runs, keys, "06_Nv_over_Nvi", "Void cells per initial void cell",
+                     "Nv_over_Nvi", "N_v/N_vi [-]", options));
+    {
+        ReportFigure f{"06_Z_eff_vs_Nv_over_Nvi", "Z̄ against N_v/N_vi", "Nv_over_Nvi",
+                       "N_v/N_vi [-]", "Z_eff", "Z̄ [-]", {}, {}, ""};
+        std::vector<double> x, y;
+        for (const TestKey& key : keys) {
+            ReportLine line = parametricLine(runs, key, "Nv_over_Nvi", "Z_eff", options);
+            if (!line.x.empty()) {
+                f.lines.push_back(std::move(line));
+            }
+            for (const auto& [table, pressure] : tablesOf(runs, key.test)) {
+                const Curve cx = shearCurve(*table, "Nv_over_Nvi");
+                const Curve cy = shearCurve(*table, "Z_eff");
+                x.insert(x.end(), cx.y.begin(), cx.y.end());
+                y.insert(y.end(), cy.y.begin(), cy.y.end());
+            }
+        }
+        f.fit = fitLine(x, y);
+        f.note = "the fit is pooled over every shear record of every test and run";
+        add(std::move(f));
+    }
+
+    // 7. H11 - H22 against eps1: all, strong and weak contacts.
+    add(strainFigure(runs, keys, "07_Hdev", "Fabric anisotropy, all contacts", "Hdev",
+                     "H11 − H22 [-]", options));
+    add(strainFigure(runs, keys, "07_Hsdev", "Fabric anisotropy, strong contacts", "Hsdev",
+                     "H11 − H22 (strong) [-]", options));
+    add(strainFigure(runs, keys, "07_Hwdev", "Fabric anisotropy, weak contacts", "Hwdev",
+                     "H11 − H22 (weak) [-]", options));
+
+    // 8. q/p against the fabric's anisotropy ratio, all and strong contacts.
+    for (const auto& [name, column, which] :
+         {std::tuple{"08_q_over_p_vs_Hratio", "Hratio", "all contacts"},
+          std::tuple{"08_q_over_p_vs_Hsratio", "Hsratio", "strong contacts"}}) {
+        ReportFigure f{name, fmt::format("Stress ratio against fabric anisotropy, {}", which),
+                       column, "(H11 − H22)/(H11 + H22) [-]", "q_over_p", "q/p [-]", {}, {}, ""};
+        for (const TestKey& key : keys) {
+            ReportLine line = parametricLine(runs, key, column, "q_over_p", options);
+            if (!line.x.empty()) {
+                f.lines.push_back(std::move(line));
+            }
+        }
+        add(std::move(f));
+    }
+    return figures;
+}
+
+Comparison compare(const Scatter& measured, const PublishedValue& published) {
+    Comparison c;
+    c.difference = measured.mean - published.value;
+    const double band = 2.0 * measured.sd;
+    if (published.upperBound) {
+        c.agrees = measured.mean < published.value;
+        c.beyondScatter = measured.mean - band >= published.value;
+    } else {
+        c.beyondScatter = !(std::abs(c.difference) <= band);
+        c.agrees = !c.beyondScatter;
+    }
+    return c;
+}
+
+std::vector<HeadlineRow> headlineTable(const std::vector<ReportRun>& runs) {
+    const std::vector<TestKey> keys = testsOf(runs);
+    using Extract = std::optional<double> (*)(const SeriesTable&, double);
+    struct Spec {
+        const char* key;
+        const char* label;
+        const char* unit;
+        Extract value;
+        std::optional<PublishedValue> published;
+    };
+    const Spec specs[] = {
+        {"e_compacted", "e after compaction", "-",
+         [](const SeriesTable& t, double p) { return shearMetrics(t, p).voidRatioAtStart; },
+         PublishedValue{kPublishedVoidRatio, false, "0.126"}},
+        {"peak_q_over_p", "peak q/p", "-",
+         [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakStressRatio; }, {}},
+        {"phi_at_peak", "φ at peak", "deg",
+         [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakFrictionAngle; }, {}},
+        {"eps1_at_peak", "ε1 at peak", "-",
+         [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakAxialStrain; }, {}},
+        {"epsv_at_10pc", "εv at ε1 = 10 %", "-",
+         [](const SeriesTable& t, double p) { return shearMetrics(t, p).volumetricStrainAt[2]; },
+         {}},
+        {"Z_eff_minus_Z", "Z̄ − Z averaged over shear", "-",
+         [](const SeriesTable& t, double) { return meanDifference(t, "Z_eff", "Z"); }, {}},
+        {"Nv_over_Nvi_at_10pc", "N_v/N_vi at ε1 = 10 %", "-",
+         [](const SeriesTable& t, double p) { return shearMetrics(t, p).voidCountRatioAt10; }, {}},
+        {"fit_slope", "slope of Z̄ on N_v/N_vi", "-",
+         [](const SeriesTable& t, double) -> std::optional<double> {
+             const auto f = fitOfTest(t);
+             return f ? std::optional<double>(f->slope) : std::nullopt;
+         },
+         PublishedValue{kPublishedFitSlope, false, "3.45"}},
+        {"fit_intercept", "intercept of Z̄ on N_v/N_vi", "-",
+         [](const SeriesTable& t, double) -> std::optional<double> {
+             const auto f = fitOfTest(t);
+             return f ? std::optional<double>(f->intercept) : std::nullopt;
+         },
+         PublishedValue{kPublishedFitIntercept, false, "2.1"}},
+        {"I_uf_mean", "mean I_uf during shear", "%",
+         [](const SeriesTable& t, double p) { return shearMetrics(t, p).meanUnbalancedForce; },
+         PublishedValue{kPublishedUnbalancedForceMax, true, "< 0.4 %"}},
+        {"lateral_stress_error_max", "largest lateral-stress error", "-",
+         [](const SeriesTable& t, double p) { return shearMetrics(t, p).maxLateralStressError; },
+         {}},
+    };
+    std::vector<HeadlineRow> rows;
+    for (const Spec& spec : specs) {
+        HeadlineRow row{spec.key, spec.label, spec.unit, {}, spec.published};
+        for (const TestKey& key : keys) {
+            std::vector<std::optional<double>> values;
+            for (const auto& [table, pressure] : tablesOf(runs, key.test)) {
+                values.push_back(spec.value(*table, pressure));
+            }
+            row.values.push_back({key.test, key.pressure, scatterOf(values)});
+        }
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+PooledFitScatter pooledFitOverRuns(const std::vector<ReportRun>& runs) {
+    std::vector<double> slopes, intercepts, r2s;
+    for (const ReportRun& r : runs) {
+        std::vector<double> x, y;
+        for (const SeriesTable& t : r.tests) {
+            const Curve cx = shearCurve(t, "Nv_over_Nvi"), cy = shearCurve(t, "Z_eff");
+            x.insert(x.end(), cx.y.begin(), cx.y.end());
+            y.insert(y.end(), cy.y.begin(), cy.y.end());
+        }
+        if (const auto fit = fitLine(x, y)) {
+            slopes.push_back(fit->slope);
+            intercepts.push_back(fit->intercept);
+            r2s.push_back(fit->r2);
+        }
+    }
+    return {scatterOf(slopes), scatterOf(intercepts), scatterOf(r2s)};
+}
+
+} // namespace grainlab
