@@ -109,6 +109,28 @@ TEST(StudySummary, ErrorsNoiseTolerancesAndTheCheapestValidSetting) {
     EXPECT_GT(*s.perRun[0].at("p015kPa.rms_q_over_p"), 0);
 }
 
+TEST(StudySummary, ASettingThatWidensTheSeedScatterBeyondTheToleranceIsNotValid) {
+    StudySpec spec;
+    spec.tolerances["peak_q_over_p"] = {0.05, true}; // 0.0255 of the reference mean 0.51
+    spec.deciding = {"peak_q_over_p"};
+    const StudyPlan plan = threeSettings();
+    // ref: 0.50, 0.52 (sd 0.0141); a: 0.47, 0.55 (the same mean, sd 0.0566: one run of a may
+    // miss the reference by far more than the tolerance); b: 0.52, 0.54 (+0.02, sd as ref's).
+    const std::vector<RunResult> results{result(0, 0.50, 10), result(1, 0.52, 12),
+                                         result(2, 0.47, 1),  result(3, 0.55, 1),
+                                         result(4, 0.52, 5),  result(5, 0.54, 5)};
+    const StudySummary s = summariseStudy(spec, plan, results);
+    const MetricSummary& a = metric(s.settings[1], "peak_q_over_p");
+    EXPECT_NEAR(*a.error, 0.0, 1e-15);
+    // 0 + (0.0566 - 0.0141) = 0.0424 > 0.0255.
+    EXPECT_FALSE(*a.withinTolerance);
+    EXPECT_FALSE(s.settings[1].valid);
+    const MetricSummary& b = metric(s.settings[2], "peak_q_over_p");
+    EXPECT_TRUE(*b.withinTolerance); // 0.02 + 0 <= 0.0255
+    EXPECT_TRUE(s.settings[0].valid); // the reference never widens its own scatter
+    EXPECT_EQ(*s.recommended, 2);
+}
+
 TEST(StudySummary, ASettingWithoutResultsIsNotValidAndTheCostMeasureIsChosen) {
     StudySpec spec;
     spec.tolerances["peak_q_over_p"] = {0.5, false};

@@ -45,7 +45,9 @@ struct MetricSummary {
     std::optional<double> error; ///< this setting's mean minus the reference's mean
     std::optional<double> noise; ///< 2 sigma of the reference seeds (the noise band half-width)
     bool withinNoise = false;
-    std::optional<bool> withinTolerance; ///< when the study gives this metric a tolerance
+    /// When the study gives this metric a tolerance: |error| plus the seed scatter beyond the
+    /// reference's (max(0, sd - sd_ref); 0 for the curve errors) within the tolerance.
+    std::optional<bool> withinTolerance;
 };
 
 struct SettingSummary {
