@@ -9,11 +9,13 @@
 
 #include "bench/bench.h"
 #include "cli/run_command.h"
+#include "report/report_command.h"
 #include "study/study_command.h"
 
 #ifdef GRAINLAB_WITH_GUI
 #include "bench/window_bench.h"
 #include "gui/app.h"
+#include "report/report_figures_writer.h"
 #include "study/study_figures_writer.h"
 #endif
 
@@ -74,6 +76,34 @@ int runCommandLine(int argc, char** argv) {
     collectCommand->add_option("folder", collectFolder, "the study folder")->required();
     collectCommand->add_flag("--quiet", study.quiet, "print nothing but errors");
 
+    ReportCommandOptions report;
+    auto* reportCommand = app.add_subcommand(
+        "report", "the reference study's figure set and headline numbers from finished runs of "
+                  "one experiment (seeds: means with their scatter)");
+    reportCommand->add_option("runs", report.runFolders, "run folders (one per seed)")->required();
+    reportCommand->add_option("--out", report.out, "report folder (report.html, figures/)")
+        ->required();
+    reportCommand->add_flag("--quiet", report.quiet, "print nothing but errors");
+
+    ReproduceOptions reproduce;
+    reproduce.experiment =
+        std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/reference.json";
+    auto* reproduceCommand = app.add_subcommand(
+        "reproduce", "run the reference experiment at several seeds (a study's local pool, "
+                     "resumable), then report on its runs");
+    reproduceCommand->add_option("--grains", reproduce.grains,
+                                 "grains (default: the reference's 8450)")
+        ->check(CLI::Range(2, 1000000));
+    reproduceCommand->add_option("--seeds", reproduce.seeds, "seeds (default 1)")
+        ->check(CLI::Range(1, 1000));
+    reproduceCommand->add_option("--jobs", reproduce.jobs,
+                                 "runs at once (default: as the processors allow)")
+        ->check(CLI::Range(1, 1024));
+    reproduceCommand->add_option("--experiment", reproduce.experiment,
+                                 "the experiment to reproduce (default: the reference)");
+    reproduceCommand->add_option("--out", reproduce.out, "folder (study/, report/)")->required();
+    reproduceCommand->add_flag("--quiet", reproduce.quiet, "no progress bar");
+
     std::string experiment = std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json";
     app.add_option("--experiment", experiment, "experiment to open in the window");
 
@@ -93,6 +123,17 @@ int runCommandLine(int argc, char** argv) {
 #ifdef GRAINLAB_WITH_GUI
         study.figures = writeStudyFiguresHeadless;
 #endif
+#ifdef GRAINLAB_WITH_GUI
+        report.figures = writeReportFiguresHeadless;
+        reproduce.figures = writeReportFiguresHeadless;
+#endif
+        if (*reportCommand) {
+            return runReportCommand(report);
+        }
+        if (*reproduceCommand) {
+            reproduce.grainlab = executablePath(argv[0]);
+            return runReproduceCommand(reproduce);
+        }
         if (*collectCommand) {
             return collectStudyCommand(collectFolder, study.quiet, study.figures);
         }
