@@ -5,13 +5,16 @@
 #include <cmath>
 
 #include <QAction>
+#include <QCoreApplication>
 #include <QDateTime>
+#include <QDesktopServices>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
+#include <QProcess>
 #include <QProgressBar>
 #include <QSlider>
 #include <QSpinBox>
@@ -19,6 +22,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QToolBar>
+#include <QUrl>
 #include <QVBoxLayout>
 
 #include "cli/atomic_file.h"
@@ -165,6 +169,11 @@ void MainWindow::buildActions() {
     saveAs_->setToolTip(tr("Write the experiment as edited in the Parameters tab to a file that "
                            "`grainlab run` reads"));
     connect(saveAs_, &QAction::triggered, this, &MainWindow::saveExperimentDialog);
+    report_ = new QAction(tr("&Report…"), this);
+    report_->setToolTip(tr("Write the reference study's figure set and headline numbers of this "
+                           "run (or of the open run file) into its folder's report/ and open "
+                           "report.html (grainlab report)"));
+    connect(report_, &QAction::triggered, this, &MainWindow::writeReport);
     start_ = new QAction(tr("Start"), this);
     start_->setShortcut(Qt::Key_F5);
     start_->setToolTip(tr("Start or resume the run (F5)"));
@@ -203,6 +212,7 @@ void MainWindow::buildMenus() {
     file->addAction(saveAs_);
     file->addAction(tr("Open &run file…"), this, &MainWindow::openRunFileDialog);
     file->addAction(tr("&Study…"), this, &MainWindow::showStudyWindow);
+    file->addAction(report_);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
     QMenu* run = menuBar()->addMenu(tr("&Run"));
@@ -331,6 +341,61 @@ void MainWindow::setNextRunFolder(const QString& folder) {
 
 QString MainWindow::runFolder() const {
     return QString::fromStdString(controller_->status().runFolder);
+}
+
+QString MainWindow::reportSource() const {
+    if (viewingFile_ && runFile_) {
+        return QFileInfo(QString::fromStdString(runFile_->path)).absolutePath();
+    }
+    return runFolder();
+}
+
+void MainWindow::writeReport() {
+    const QString source = reportSource();
+    if (source.isEmpty()) {
+        showError(tr("No run to report on: run an experiment or open a run file first."));
+        return;
+    }
+    const RunState state = controller_->status().state;
+    if (!(viewingFile_ && runFile_) && (state == RunState::Running || state == RunState::Paused)) {
+        showError(tr("The run is still going: stop it (or let it finish) before its report is "
+                     "written from its run file."));
+        return;
+    }
+    if (reportProcess_ && reportProcess_->state() != QProcess::NotRunning) {
+        showError(tr("A report is being written already."));
+        return;
+    }
+    const QString out = QDir(source).filePath(QStringLiteral("report"));
+    if (!reportProcess_) {
+        reportProcess_ = new QProcess(this);
+        reportProcess_->setStandardInputFile(QProcess::nullDevice());
+        reportProcess_->setProcessChannelMode(QProcess::MergedChannels);
+    }
+    disconnect(reportProcess_, nullptr, this, nullptr);
+    connect(reportProcess_, &QProcess::finished, this, [this, out](int code, QProcess::ExitStatus) {
+        report_->setEnabled(true);
+        const QString html = QDir(out).filePath(QStringLiteral("report.html"));
+        if (code != 0) {
+            showError(tr("The report failed: %1")
+                          .arg(QString::fromLocal8Bit(reportProcess_->readAll()).trimmed()));
+            return;
+        }
+        statusBar()->showMessage(tr("Report written: %1").arg(html), 10000);
+        QDesktopServices::openUrl(QUrl::fromLocalFile(html));
+        emit reportWritten(html);
+    });
+    connect(reportProcess_, &QProcess::errorOccurred, this, [this](QProcess::ProcessError e) {
+        if (e == QProcess::FailedToStart) {
+            report_->setEnabled(true);
+            showError(tr("The report could not start: %1").arg(reportProcess_->errorString()));
+        }
+    });
+    report_->setEnabled(false);
+    statusBar()->showMessage(tr("Writing the report into %1…").arg(out));
+    reportProcess_->start(grainlab_.isEmpty() ? QCoreApplication::applicationFilePath() : grainlab_,
+                          {QStringLiteral("report"), source, QStringLiteral("--out"), out,
+                           QStringLiteral("--quiet")});
 }
 
 QString MainWindow::editedExperimentText(QString* error) const {

@@ -24,6 +24,7 @@
 
 class QAction;
 class QLabel;
+class QProcess;
 class QProgressBar;
 class QSpinBox;
 class QTabWidget;
@@ -86,6 +87,24 @@ public:
 
     /// Exports (no dialogs): figure set, the scene, one chart, every series as CSV.
     QStringList exportFigureSet(const QString& folder, QString* error = nullptr);
+
+    /// The run folder File > Report… reports on: the open run file's folder while the scene
+    /// shows it, else the current (or last) run's; "" when there is none.
+    QString reportSource() const;
+    /// Writes the report of reportSource() into its folder's report/ with a `grainlab report`
+    /// process (the window never waits for it), then opens report.html and emits
+    /// reportWritten. Refused (with a message) while the live run it would read is still
+    /// running or paused.
+    void writeReport();
+    /// The executable that writes reports (default: this application's).
+    void setGrainlabExecutable(const QString& path) { grainlab_ = path; }
+    QAction* reportAction() const { return report_; }
+
+signals:
+    /// report.html has been written (and opened).
+    void reportWritten(const QString& html);
+
+public:
 
     SimulationController& controller() { return *controller_; }
     SceneView* sceneView() const { return scene_; }
@@ -162,6 +181,9 @@ private:
     QAction* step_ = nullptr;
     QAction* stop_ = nullptr;
     QAction* saveAs_ = nullptr;
+    QAction* report_ = nullptr;
+    QProcess* reportProcess_ = nullptr;
+    QString grainlab_;
     QSpinBox* stepSize_ = nullptr;
     QLabel* stage_;
     QLabel* speed_;

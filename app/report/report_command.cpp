@@ -81,12 +81,12 @@ LoadedRuns loadRuns(const std::vector<std::string>& folders) {
         if (!fs::exists(runFile)) {
             throw std::runtime_error(fmt::format("{}: no run.h5: not a run folder", folder));
         }
+        // A run not finished (a window run has no cost.json; an interrupted one) is reported
+        // as far as it got, and the page says so.
         std::optional<RunResult> result = readRunResult(folder, int(i));
+        const bool finished = result.has_value();
         if (!result) {
-            throw std::runtime_error(fmt::format(
-                "{}: the run has not finished (its cost.json does not say finished); continue it "
-                "with grainlab run --resume {}",
-                folder, folder));
+            result = readRunSeries(folder, int(i));
         }
         const nlohmann::json experiment = nlohmann::json::parse(readExperimentText(runFile));
         if (i == 0) {
@@ -116,6 +116,7 @@ LoadedRuns loadRuns(const std::vector<std::string>& folders) {
         source.grains = experiment.contains("grains") ? experiment["grains"].value("count", 0) : 0;
         source.wallSeconds = result->cost.wallSeconds;
         source.cpuSeconds = result->cost.cpuSeconds;
+        source.finished = finished;
         loaded.runs.push_back(std::move(run));
         loaded.sources.push_back(std::move(source));
     }

@@ -24,7 +24,8 @@ struct ReportSource {
     std::string experimentName;
     int seed = 0;
     int grains = 0;
-    double wallSeconds = 0, cpuSeconds = 0;
+    double wallSeconds = 0, cpuSeconds = 0; ///< from cost.json (0 without one)
+    bool finished = false; ///< cost.json says the run finished (else: reported as far as it got)
 };
 
 /// Draws the report's figures into `folder` (figures/ of the report), one file per format per

@@ -101,7 +101,18 @@ std::string sourcesText(const ReportPage& page) {
                            }
                            return seeds;
                        }(),
-                       wall, cpu);
+                       wall, cpu) +
+           [&] {
+               int unfinished = 0;
+               for (const ReportSource& s : page.sources) {
+                   unfinished += s.finished ? 0 : 1;
+               }
+               return unfinished == 0
+                          ? std::string()
+                          : fmt::format(" {} of them had not finished (no cost.json saying so): "
+                                        "reported as far as they got.",
+                                        unfinished);
+           }();
 }
 
 std::string pooledText(const PooledFitScatter& p) {

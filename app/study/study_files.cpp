@@ -46,11 +46,7 @@ std::string yesNo(bool b) {
 
 } // namespace
 
-std::optional<RunResult> readRunResult(const std::string& runFolder, int runIndex) {
-    const RunCostRecord cost = readRunCost(runFolder);
-    if (!cost.finished) {
-        return std::nullopt;
-    }
+RunResult readRunSeries(const std::string& runFolder, int runIndex) {
     const std::string runFile = (fs::path(runFolder) / "run.h5").string();
     RunResult r;
     r.run = runIndex;
@@ -63,6 +59,15 @@ std::optional<RunResult> readRunResult(const std::string& runFolder, int runInde
         r.pressures.push_back(t.stagePressures.front());
         r.tests.push_back(std::move(t));
     }
+    return r;
+}
+
+std::optional<RunResult> readRunResult(const std::string& runFolder, int runIndex) {
+    const RunCostRecord cost = readRunCost(runFolder);
+    if (!cost.finished) {
+        return std::nullopt;
+    }
+    RunResult r = readRunSeries(runFolder, runIndex);
     r.cost.wallSeconds = cost.wallSeconds;
     r.cost.cpuSeconds = cost.cpuSeconds;
     r.cost.steps = cost.steps;

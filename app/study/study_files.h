@@ -23,6 +23,9 @@ namespace grainlab {
 /// when the run is not finished (no cost.json saying so). Throws std::runtime_error naming the
 /// file when a finished run's files cannot be read.
 std::optional<RunResult> readRunResult(const std::string& runFolder, int runIndex);
+/// The shear tests' series and pressures of a run folder's run.h5, finished or not (no cost).
+/// Throws std::runtime_error naming the file when it cannot be read.
+RunResult readRunSeries(const std::string& runFolder, int runIndex);
 
 /// Writes study.csv: one row per run with results (knob levels, every metric, cost).
 void writeStudyCsv(const std::string& path, const StudySpec& spec, const StudyPlan& plan,
