@@ -73,6 +73,34 @@ OrderedJson& child(OrderedJson& j, const char* key) {
 
 } // namespace
 
+std::optional<double> knobValueIn(const std::string& experimentText, KnobKind kind) {
+    const ExperimentConfig c = parseExperimentText(experimentText, "<experiment>");
+    const double dt = c.parameters.timeStep;
+    switch (kind) {
+    case KnobKind::TimeStepFraction:
+        return dt / criticalTimeStep(shapesOf(c), c.parameters).limit;
+    case KnobKind::AxialStrainPerStep:
+        return c.shear.axialStrainPerStep;
+    case KnobKind::InertialNumber: {
+        const double p = *std::min_element(c.shear.pressures.begin(), c.shear.pressures.end());
+        return c.shear.axialStrainPerStep / dt * meanDiameter(c) *
+               std::sqrt(c.parameters.density / p);
+    }
+    case KnobKind::GrainCount:
+        return double(c.assembly.grainCount);
+    case KnobKind::NeighbourSkin: // 0 in the file: 0.1 of the smallest width
+        return c.parameters.neighbourSkin > 0
+                   ? c.parameters.neighbourSkin / c.assembly.widths.front()
+                   : 0.1;
+    case KnobKind::Threads:
+        return double(c.parameters.threads);
+    case KnobKind::Damping:
+    case KnobKind::Shape:
+        break;
+    }
+    return std::nullopt;
+}
+
 std::string knobName(KnobKind kind) {
     for (const KnobInfo& k : kKnobs) {
         if (k.kind == kind) {

@@ -145,3 +145,27 @@ TEST(StudyPlan, LevelLabels) {
 
 } // namespace
 } // namespace grainlab
+
+namespace grainlab {
+namespace {
+
+TEST(StudyPlan, AKnobsValueInAnExperimentIsTheLevelThatMadeIt) {
+    const std::string base = quickText();
+    EXPECT_EQ(*knobValueIn(base, KnobKind::GrainCount), 800.0);
+    EXPECT_EQ(*knobValueIn(base, KnobKind::NeighbourSkin), 0.1); // the default skin
+    EXPECT_FALSE(knobValueIn(base, KnobKind::Damping));
+    for (const auto& [kind, value] : std::vector<std::pair<KnobKind, double>>{
+             {KnobKind::TimeStepFraction, 0.5},
+             {KnobKind::InertialNumber, 0.002},
+             {KnobKind::AxialStrainPerStep, 3e-6},
+             {KnobKind::NeighbourSkin, 0.3},
+             {KnobKind::Threads, 2}}) {
+        KnobLevel level;
+        level.number = value;
+        const std::string made = applySetting(base, "quick.json", {{kind, level}}, 1);
+        EXPECT_NEAR(*knobValueIn(made, kind), value, 1e-12 * value) << knobName(kind);
+    }
+}
+
+} // namespace
+} // namespace grainlab

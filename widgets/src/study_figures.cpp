@@ -139,8 +139,20 @@ PlotPainter metricKnobPlot(const StudySpec& spec, const StudyPlan& plan,
         const auto level = setting.levels.find(knob);
         PlotPoint p;
         if (level == setting.levels.end()) {
+            // The base's own value of the knob (e.g. its grain count), from its experiment.
             p.label = QObject::tr("base");
-            p.x = numeric ? 0 : -1;
+            p.x = -1;
+            if (numeric) {
+                const auto run = std::find_if(plan.runs.begin(), plan.runs.end(),
+                                              [&](const StudyRun& r) {
+                                                  return r.setting == s.setting;
+                                              });
+                const std::optional<double> value =
+                    run == plan.runs.end() ? std::nullopt
+                                           : knobValueIn(run->experimentText, knob);
+                p.x = value.value_or(0);
+                p.label = QObject::tr("base (%1)").arg(p.x, 0, 'g', 3);
+            }
         } else if (numeric) {
             p.x = level->second.number;
             p.label = q(level->second.label());

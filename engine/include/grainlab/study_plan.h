@@ -107,6 +107,11 @@ struct StudyPlan {
 /// a level that makes an invalid experiment throws ExperimentFileError naming the run.
 StudyPlan planStudy(const StudySpec& spec);
 
+/// The value a numeric knob has in an experiment (e.g. the base's time step as a fraction of
+/// its critical-step estimate, its grain count); nothing for the damping and shape knobs,
+/// whose levels are objects. Throws ExperimentFileError on an invalid experiment.
+std::optional<double> knobValueIn(const std::string& experimentText, KnobKind kind);
+
 /// The base experiment text with `levels` and `seed` applied (validated).
 std::string applySetting(const std::string& baseText, const std::string& baseSource,
                          const std::map<KnobKind, KnobLevel>& levels, std::uint64_t seed);
