@@ -55,6 +55,23 @@ void expectRefused(const Json& j, const std::string& keyPath,
     expectRefusedText(j.dump(2), keyPath, fragments);
 }
 
+TEST(HostileExperiment, ALateralServoSlowerThanTheAxialLoadingIsRefused) {
+    // 1e-6 per step at dt = 1e-6 s is 1 /s axially: a dilating sample needs a lateral cap of
+    // at least 2 /s.
+    Json j = minimalExperiment();
+    j["time_step"] = 1e-6;
+    j["shear"]["axial_strain_per_step"] = 1e-6;
+    j["shear"]["max_strain_rate"] = 1.9;
+    expectRefused(j, "shear.max_strain_rate", {"shear.max_strain_rate", "1.9", "at least 2 /s"});
+    j["shear"]["max_strain_rate"] = 2.0; // the limit itself is fine
+    EXPECT_NO_THROW(parseExperimentText(j.dump(), "ok.json"));
+    j["shear"].erase("max_strain_rate");
+    j["shear"]["axial_strain_per_step"] = 5e-7; // 0.5 /s: the default cap of 1 /s is enough
+    EXPECT_NO_THROW(parseExperimentText(j.dump(), "ok.json"));
+    j["shear"]["axial_strain_per_step"] = 6e-7; // 0.6 /s against the default cap
+    expectRefused(j, "shear.max_strain_rate", {"shear.max_strain_rate", "default 1", "set it"});
+}
+
 TEST(HostileExperiment, StrainRateBeyondWhatTheNeighbourListFollowsIsRefused) {
     // 1e8 / s at dt = 1e-6 s is a cell strain of 100 per step: it crashed the neighbour rebuild.
     for (const double rate : {1e8, 1e9, 2e3}) {

@@ -156,8 +156,8 @@ TEST(StudyPlan, AKnobsValueInAnExperimentIsTheLevelThatMadeIt) {
     EXPECT_FALSE(knobValueIn(base, KnobKind::Damping));
     for (const auto& [kind, value] : std::vector<std::pair<KnobKind, double>>{
              {KnobKind::TimeStepFraction, 0.5},
-             {KnobKind::InertialNumber, 0.002},
-             {KnobKind::AxialStrainPerStep, 3e-6},
+             {KnobKind::InertialNumber, 0.0005},
+             {KnobKind::AxialStrainPerStep, 2e-6},
              {KnobKind::NeighbourSkin, 0.3},
              {KnobKind::Threads, 2}}) {
         KnobLevel level;
