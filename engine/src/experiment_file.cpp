@@ -43,8 +43,8 @@ void checkStrainRate(const JsonSection& s, double rate, double timeStep) {
 }
 
 /// The lateral servo's rate cap must exceed the axial strain rate by this factor: a sample
-/// sheared at eps1_rate widens at eps1_rate (1 + DI), DI the dilatancy index (measured up to
-/// about 0.7 on dense ovals). Measured below it: 8450 ovals sheared at 1.6 /s with the cap at
+/// sheared at eps1_rate widens at eps1_rate (1 + DI), DI the dilatancy index (on dense ovals
+/// about 0.7 on average over the shear, about 1 at its largest). Measured below it: 8450 ovals sheared at 1.6 /s with the cap at
 /// 1 /s were squeezed until the overlap guard stopped them; 2000 ovals at 4.7 /s with the cap at
 /// 5 /s could not dilate (eps_v rose where the slow reference's fell).
 constexpr double kLateralServoMargin = 2.0;

@@ -235,6 +235,9 @@ void PlotPainter::paint(QPainter& painter, const QRectF& rect) const {
             // Labels of points that nearly coincide are stacked, not drawn over each other.
             QRectF box(c + QPointF(r + 4, -r - 2 - metrics.ascent()),
                        QSizeF(metrics.horizontalAdvance(p.label), metrics.height()));
+            if (box.right() > plotArea(rect).right()) {
+                box.moveRight(c.x() - r - 4); // a point at the right edge: its label on the left
+            }
             for (int tries = 0; tries < 8; ++tries) {
                 const bool clash = std::any_of(labels.begin(), labels.end(),
                                                [&](const QRectF& l) { return l.intersects(box); });

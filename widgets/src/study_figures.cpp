@@ -151,7 +151,7 @@ PlotPainter metricKnobPlot(const StudySpec& spec, const StudyPlan& plan,
                     run == plan.runs.end() ? std::nullopt
                                            : knobValueIn(run->experimentText, knob);
                 p.x = value.value_or(0);
-                p.label = QObject::tr("base (%1)").arg(p.x, 0, 'g', 3);
+                p.label = QObject::tr("base (%1)").arg(p.x, 0, 'g', 6);
             }
         } else if (numeric) {
             p.x = level->second.number;
