@@ -118,19 +118,32 @@ void RunOutputFolder::voidCells(const std::string& name, const VoidCellSet& cell
     runFile_->voidCells(name, cells);
 }
 
+void RunOutputFolder::checkpoint(const CheckpointData& data) {
+    runFile_->checkpoint(data);
+}
+
 ResumePoint RunOutputFolder::readResumePoint(const std::string& folder) {
     const std::string path = (fs::path(folder) / "run.h5").string();
     if (!fs::exists(path)) {
         throw std::runtime_error(fmt::format("--resume {}: no run file {} there", folder, path));
     }
-    const auto checkpoints = listCheckpoints(path);
-    if (checkpoints.empty()) {
+    std::string last;
+    for (const CheckpointInfo& info : listCheckpointInfo(path)) {
+        if (!info.peak) {
+            last = info.name;
+        }
+    }
+    if (last.empty()) {
         throw std::runtime_error(fmt::format("--resume {}: {} holds no checkpoint yet", folder, path));
     }
     ResumePoint r;
-    const std::string group = checkpointGroup(checkpoints.back());
+    const std::string group = checkpointGroup(last);
     r.state = readState(path, group);
     r.runnerState = readRunnerState(path, group);
+    const std::string peak = ExperimentRunner::runningPeakCheckpoint(r.runnerState);
+    if (!peak.empty()) {
+        r.runningPeak = readState(path, runningPeakGroup(peak));
+    }
     for (double pressure : listSamples(path)) {
         r.samples[pressure] = readState(path, sampleGroup(pressure));
     }

@@ -48,6 +48,7 @@ public:
                     const std::string& runnerState, const StageIdentity& identity) override;
     void sample(double pressure, const SimulationState& state) override;
     void voidCells(const std::string& name, const VoidCellSet& cells) override;
+    void checkpoint(const CheckpointData& data) override;
 
     std::string runFilePath() const;
     std::string seriesPath(const std::string& test) const;
@@ -55,7 +56,8 @@ public:
     /// may be written after it.
     void close();
 
-    /// Everything a resumed run needs, read from the run file of `folder`.
+    /// Everything a resumed run needs, read from the run file of `folder`: its last checkpoint
+    /// that is not a peak checkpoint (those are for reading), with the running peak it names.
     static ResumePoint readResumePoint(const std::string& folder);
 
 private:

@@ -84,6 +84,11 @@ private:
             folder_->checkpoint(name, state, runnerState);
         }
     }
+    void checkpoint(const CheckpointData& data) override {
+        if (folder_) {
+            folder_->checkpoint(data); // with its identity, contacts and the running peak
+        }
+    }
     void sample(double pressure, const SimulationState& state) override {
         if (folder_) {
             folder_->sample(pressure, state);

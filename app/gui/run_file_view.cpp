@@ -23,7 +23,30 @@ std::string stageName(const CheckpointInfo& info) {
     if (info.stageKind.empty()) {
         return info.name; // not recorded (cannot happen in a file of this format)
     }
-    return fmt::format("{} {:g} kPa", info.stageKind, info.pressure / 1000.0);
+    return fmt::format("{} {:g} kPa{}", info.stageKind, info.pressure / 1000.0,
+                       info.peak ? ", peak of q/p" : "");
+}
+
+/// The checkpoints in write order, except that a test's peak checkpoint (written when the test
+/// ended) moves to just after the last checkpoint of its test at or before its step, so that
+/// the scrubber runs through each test in the order of eps1.
+std::vector<CheckpointInfo> inScrubberOrder(std::vector<CheckpointInfo> infos) {
+    std::vector<CheckpointInfo> out;
+    std::vector<CheckpointInfo> peaks;
+    for (CheckpointInfo& info : infos) {
+        (info.peak ? peaks : out).push_back(std::move(info));
+    }
+    for (CheckpointInfo& peak : peaks) {
+        std::size_t at = out.size();
+        for (std::size_t k = out.size(); k-- > 0;) {
+            if (out[k].test == peak.test && out[k].step <= peak.step) {
+                at = k + 1;
+                break;
+            }
+        }
+        out.insert(out.begin() + static_cast<std::ptrdiff_t>(at), std::move(peak));
+    }
+    return out;
 }
 
 } // namespace
@@ -31,7 +54,7 @@ std::string stageName(const CheckpointInfo& info) {
 RunFileView openRunFile(const std::string& path) {
     RunFileView view;
     view.path = path;
-    const std::vector<CheckpointInfo> infos = listCheckpointInfo(path);
+    const std::vector<CheckpointInfo> infos = inScrubberOrder(listCheckpointInfo(path));
     const std::string prefix = std::filesystem::path(path).filename().string() + ": ";
     for (const std::string& test : listTests(path)) {
         SeriesTable table = readSeries(path, test);

@@ -17,7 +17,8 @@ namespace grainlab::ui {
 
 struct RunFileView {
     std::string path;
-    std::vector<std::string> checkpoints; ///< in write order
+    /// In write order, but each test's peak checkpoint (of q/p) among its test's by step.
+    std::vector<std::string> checkpoints;
     /// Per checkpoint, from its identity attributes in the file: its step, stage ("shear 15
     /// kPa"), test (with the file name, as the series) and eps1 of its test.
     std::vector<std::int64_t> checkpointStep;

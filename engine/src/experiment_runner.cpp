@@ -49,6 +49,38 @@ std::vector<SeriesColumn> numericColumns() {
     return out;
 }
 
+/// The running maximum of q/p of the shear test under way, at its record points. The peak is
+/// known only when the test ends: until then the state of the largest q/p so far is kept here,
+/// and written as the test's peak checkpoint at its end. A checkpoint written in between keeps
+/// the maximum in its runner state (and the state in the checkpoint, see keptIn), so that a
+/// resumed run continues it and writes the same peak checkpoint as an unbroken run.
+struct RunningPeak {
+    bool active = false;
+    double stressRatio = 0; ///< q/p [-]
+    std::int64_t step = 0;
+    double eps1 = 0;       ///< [-]
+    SimulationState state; ///< at that record
+    /// The checkpoint whose group running_peak holds `state`; "" while none does (a checkpoint
+    /// written at the peak's own step needs none: its state is the peak's).
+    std::string keptIn;
+
+    nlohmann::json json(const std::string& keptAs) const {
+        nlohmann::json j;
+        j["q_over_p"] = stressRatio;
+        j["step"] = step;
+        j["eps1"] = eps1;
+        j["kept_in"] = keptAs;
+        return j;
+    }
+    void restore(const nlohmann::json& j) {
+        active = true;
+        stressRatio = j.at("q_over_p");
+        step = j.at("step");
+        eps1 = j.at("eps1");
+        keptIn = j.at("kept_in");
+    }
+};
+
 } // namespace
 
 struct ExperimentRunner::Impl {
@@ -72,6 +104,7 @@ struct ExperimentRunner::Impl {
     std::map<double, SimulationState> samples;
     std::vector<SeriesTable> series;
     int currentSeries = -1;
+    RunningPeak peak; ///< of the shear test under way (inactive outside shear)
 
     double pressure() const {
         return phase == Phase::Compaction ? config.compaction.pressures.at(index)
@@ -177,6 +210,7 @@ struct ExperimentRunner::Impl {
         stageStartStep = sim->stepCount();
         setStrainReference();
         voidsAtStart = -1;
+        peak = RunningPeak{};
         const double dt = config.parameters.timeStep;
         sim->setAxisControl(0, {AxisMode::Strain, config.shear.axialStrainPerStep / dt, 0.0,
                                 length1At0});
@@ -272,6 +306,10 @@ struct ExperimentRunner::Impl {
             rows[t.test] = t.rows.size();
         }
         j["series_rows"] = rows;
+        if (peak.active) {
+            // kept_in "": the checkpoint's own state is the peak's.
+            j["peak"] = peak.json(peak.step == sim->stepCount() ? std::string() : peak.keptIn);
+        }
         return j.dump();
     }
 
@@ -298,6 +336,38 @@ struct ExperimentRunner::Impl {
         currentSeries = current.empty() ? -1 : seriesIndex(current);
     }
 
+    /// The running peak of a resumed run: from the runner state, with the state kept in the
+    /// checkpoint it names (`kept`), or the resumed state itself when the peak was at its step.
+    void restorePeak(const std::string& runnerStateText, const SimulationState& resumed,
+                     std::optional<SimulationState> kept) {
+        const nlohmann::json j = nlohmann::json::parse(runnerStateText);
+        if (!j.contains("peak")) {
+            return;
+        }
+        peak.restore(j.at("peak"));
+        if (!peak.keptIn.empty()) {
+            if (!kept) {
+                throw std::runtime_error(fmt::format(
+                    "resume: the checkpoint's running maximum of q/p is kept in checkpoint {}, "
+                    "which the resume point does not hold",
+                    peak.keptIn));
+            }
+            peak.state = std::move(*kept);
+        } else if (peak.step == resumed.step) {
+            peak.state = resumed;
+        } else {
+            throw std::runtime_error(
+                fmt::format("resume: the running maximum of q/p (step {}) is kept in no checkpoint",
+                            peak.step));
+        }
+        if (peak.state.step != peak.step) {
+            throw std::runtime_error(fmt::format("resume: the running maximum of q/p is at step "
+                                                 "{}, its kept state at step {}",
+                                                 peak.step, peak.state.step));
+        }
+        peak.state.parameters.threads = threadsFor(config);
+    }
+
     void checkpoint(const std::string& label) { checkpoint(label, identity()); }
 
     void checkpoint(const std::string& label, const StageIdentity& id) {
@@ -305,9 +375,70 @@ struct ExperimentRunner::Impl {
             return;
         }
         ++checkpointCounter;
-        const std::string name = fmt::format("{:06d}-{}", checkpointCounter, label);
-        output->checkpoint(name, sim->state(), runnerState(), id);
-        output->voidCells(name, computeVoidCells(sim->contactNetwork()));
+        const SimulationState state = sim->state();
+        const ContactNetwork network = sim->contactNetwork();
+        const VoidCellSet cells = computeVoidCells(network);
+        CheckpointData data;
+        data.name = fmt::format("{:06d}-{}", checkpointCounter, label);
+        data.state = &state;
+        data.identity = id;
+        data.network = &network;
+        data.voidCells = &cells;
+        if (peak.active && peak.step != state.step && peak.keptIn.empty()) {
+            // The first checkpoint since the peak's record keeps its state (named in the
+            // runner state, so written before it is made).
+            data.runningPeak = &peak.state;
+            peak.keptIn = data.name;
+        }
+        data.runnerState = runnerState();
+        output->checkpoint(data);
+    }
+
+    /// At a shear record, before a checkpoint of the same step: a new maximum of q/p keeps a
+    /// copy of the state. The first of equal maxima is the peak.
+    void trackPeak() {
+        if (!output) {
+            return; // only the peak checkpoint needs it
+        }
+        const SeriesTable& t = series[currentSeries];
+        const double ratio = t.rows.back()[t.column("q_over_p")];
+        if (peak.active && !(ratio > peak.stressRatio)) {
+            return;
+        }
+        peak.active = true;
+        peak.stressRatio = ratio;
+        peak.step = sim->stepCount();
+        peak.eps1 = eps1();
+        peak.state = sim->state();
+        peak.keptIn.clear();
+    }
+
+    /// The checkpoint at the peak of q/p of the test that is ending, marked as such. It is for
+    /// reading and viewing, not for continuing: it has no runner state (a resumed run starts
+    /// from the last checkpoint that is not a peak).
+    void peakCheckpoint() {
+        if (!output || !peak.active) {
+            return;
+        }
+        ++checkpointCounter;
+        std::string stage = stageName();
+        std::replace(stage.begin(), stage.end(), ' ', '-');
+        // The contacts of the peak's state: a simulation made from it has the same forces, bit
+        // for bit (as a resumed run has).
+        const Simulation atPeak(peak.state);
+        const ContactNetwork network = atPeak.contactNetwork();
+        const VoidCellSet cells = computeVoidCells(network);
+        CheckpointData data;
+        data.name = fmt::format("{:06d}-peak-{}-step{}", checkpointCounter, stage, peak.step);
+        data.state = &peak.state;
+        data.identity = identity();
+        data.identity.step = peak.step;
+        data.identity.axialStrain = peak.eps1;
+        data.identity.peak = true;
+        data.identity.peakStressRatio = peak.stressRatio;
+        data.network = &network;
+        data.voidCells = &cells;
+        output->checkpoint(data);
     }
 
     std::string checkpointLabel() const {
@@ -342,6 +473,7 @@ struct ExperimentRunner::Impl {
             if (now >= nextRecordStep || end) {
                 recordNow();
                 nextRecordStep = now + strideOf(config.record.strainInterval);
+                trackPeak();
             }
             if (now >= nextSnapshotStep && !end) {
                 checkpoint(checkpointLabel());
@@ -396,11 +528,16 @@ struct ExperimentRunner::Impl {
             startShear();
             recordNow(); // eps1 = 0: N_vi
             nextRecordStep = stageStartStep + strideOf(config.record.strainInterval);
+            trackPeak();
             checkpoint(checkpointLabel());
         }
     }
 
-    void finishShear() { stageEndCheckpoint(index + 1 == int(config.shear.pressures.size())); }
+    void finishShear() {
+        peakCheckpoint();
+        peak = RunningPeak{};
+        stageEndCheckpoint(index + 1 == int(config.shear.pressures.size()));
+    }
 
     /// The checkpoint at the end of a compaction stage or a shear test, then the next stage.
     /// The checkpoint says that its stage is done (stage_done), so that a run resumed from it
@@ -526,6 +663,7 @@ ExperimentRunner::ExperimentRunner(ExperimentConfig config, ResumePoint resume, 
         impl_->series.push_back(std::move(t));
     }
     resume.state.parameters.threads = threadsFor(impl_->config);
+    impl_->restorePeak(resume.runnerState, resume.state, std::move(resume.runningPeak));
     impl_->sim = std::make_unique<Simulation>(std::move(resume.state));
     impl_->restore(resume.runnerState);
 }
@@ -576,6 +714,11 @@ void ExperimentRunner::checkpointNow(const std::string& name) { impl_->checkpoin
 
 bool ExperimentRunner::finishedAt(const std::string& runnerState) {
     return nlohmann::json::parse(runnerState).at("phase").get<int>() == int(Phase::Done);
+}
+
+std::string ExperimentRunner::runningPeakCheckpoint(const std::string& runnerState) {
+    const nlohmann::json j = nlohmann::json::parse(runnerState);
+    return j.contains("peak") ? j.at("peak").at("kept_in").get<std::string>() : std::string();
 }
 
 std::map<std::string, std::size_t>

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <functional>
 
 #include <fmt/format.h>
 
@@ -125,8 +126,9 @@ void checkTable(const SeriesTable& t) {
     }
 }
 
-/// Refuses a file that is not a GrainLab run file of this format version.
-void checkFormatVersion(const H5::H5File& file, const std::string& path) {
+/// Refuses a file that is not a GrainLab run file of a version in [oldest, this version].
+void checkFormatVersion(const H5::H5File& file, const std::string& path,
+                        int oldest = kRunFileOldestReadableVersion) {
     const H5::Group root = file.openGroup("/");
     if (!root.attrExists("format_version") || !root.attrExists("software")) {
         throw std::runtime_error(fmt::format("{}: not a GrainLab run file (no format_version "
@@ -138,11 +140,17 @@ void checkFormatVersion(const H5::H5File& file, const std::string& path) {
     if (a.getTypeClass() == H5T_INTEGER && a.getSpace().getSimpleExtentNpoints() == 1) {
         a.read(H5::PredType::NATIVE_INT64, &version);
     }
-    if (version != kRunFileFormatVersion) {
-        throw std::runtime_error(fmt::format(
-            "{}: run file format version {}; this GrainLab reads and resumes version {} only "
-            "(run the experiment again to get a file of this version)",
-            path, version, kRunFileFormatVersion));
+    if (version < oldest || version > kRunFileFormatVersion) {
+        throw std::runtime_error(
+            oldest == kRunFileFormatVersion
+                ? fmt::format("{}: run file format version {}; this GrainLab continues version "
+                              "{} only (it reads versions {} to {}; run the experiment again to "
+                              "get a file it can continue)",
+                              path, version, kRunFileFormatVersion, kRunFileOldestReadableVersion,
+                              kRunFileFormatVersion)
+                : fmt::format("{}: run file format version {}; this GrainLab reads versions {} to "
+                              "{} (run the experiment again to get a file of this version)",
+                              path, version, oldest, kRunFileFormatVersion));
     }
 }
 
@@ -176,10 +184,13 @@ struct RunFile::Impl {
 
     OpenSeries& seriesFor(const SeriesTable& table);
     void createSeries(H5::Group& test, const SeriesTable& table, OpenSeries& out);
+    /// Writes the group under a scratch name and renames it when complete; `fill` adds what
+    /// else belongs to it before the rename.
     void writeStateGroup(const std::string& parent, const std::string& name,
                          const SimulationState& state, const std::string* runnerState,
                          const std::vector<std::pair<std::string, double>>& extra,
-                         const StageIdentity* identity = nullptr);
+                         const StageIdentity* identity = nullptr,
+                         const std::function<void(H5::Group&)>& fill = {});
     bool failed = false; ///< a write failed: nothing more is written, the file is left as is
 
     /// Refuses a write of about `bytes` that the file system (or the file size limit) has no
@@ -357,7 +368,7 @@ RunFile::RunFile(const std::string& path, const std::string& experimentText, Mod
         } else {
             impl_->file =
                 openFile(path, H5F_ACC_RDWR, checksummedAccess(), "opening it for writing");
-            checkFormatVersion(impl_->file, path);
+            checkFormatVersion(impl_->file, path, kRunFileFormatVersion);
             H5::Group root = impl_->file.openGroup("/");
             if (readStringDataset(root, "experiment") != experimentText) {
                 throw std::runtime_error(
@@ -506,7 +517,8 @@ void RunFile::recordNow(const SeriesTable& table) {
 void RunFile::Impl::writeStateGroup(const std::string& parentName, const std::string& name,
                                     const SimulationState& state, const std::string* runnerState,
                                     const std::vector<std::pair<std::string, double>>& extra,
-                                    const StageIdentity* identity) {
+                                    const StageIdentity* identity,
+                                    const std::function<void(H5::Group&)>& fill) {
     H5::Group parent = file.openGroup(parentName);
     const std::string link = linkName(name);
     const std::string scratch = link + kWritingSuffix;
@@ -529,7 +541,14 @@ void RunFile::Impl::writeStateGroup(const std::string& parentName, const std::st
             writeAttribute(g, "test", identity->test);
             writeAttribute(g, "pressure", identity->pressure);
             writeAttribute(g, "axial_strain", identity->axialStrain);
+            writeAttribute(g, "peak", std::int32_t(identity->peak ? 1 : 0));
+            if (identity->peak) {
+                writeAttribute(g, "q_over_p", identity->peakStressRatio);
+            }
             writeArray(g, "theta_at_test_start", identity->thetaAtTestStart, "rad");
+        }
+        if (fill) {
+            fill(g);
         }
         writeAttribute(g, "index", nextIndex(parent));
     } catch (...) {
@@ -549,7 +568,16 @@ namespace {
 /// Bytes of a state in the run file, roughly (for the room check).
 std::uint64_t stateBytes(const SimulationState& s) {
     return s.grains.size() * (7 * 8 + 3 * 8) + s.pairs.size() * (4 * 4 + 8 + 1) +
-           s.shapes.size() * 12 * 8 + (std::uint64_t(64) << 10);
+           s.shapes.size() * (12 * 8 + 2 * 8 * kShapeOutlinePoints) + (std::uint64_t(64) << 10);
+}
+
+/// Bytes of the void cells of a checkpoint, roughly (for the room check).
+std::uint64_t voidCellBytes(const VoidCellSet& cells) {
+    std::uint64_t grains = 0;
+    for (const VoidCell& c : cells.cells) {
+        grains += c.grains.size();
+    }
+    return cells.cells.size() * 96 + grains * (4 + 2 * 2 * 8);
 }
 
 } // namespace
@@ -567,6 +595,53 @@ void RunFile::checkpoint(const std::string& name, const SimulationState& state,
     const std::uint64_t bytes = stateBytes(state) + runnerState.size() + state.grains.size() * 72;
     impl_->write(bytes, "checkpoint " + name,
                  [&] { checkpointNow(name, state, runnerState, &identity); });
+}
+
+void RunFile::checkpoint(const CheckpointData& data) {
+    std::uint64_t bytes = stateBytes(*data.state) + data.runnerState.size();
+    if (data.network) {
+        bytes += data.network->contacts.size() * 120 + data.network->grainCount * 16;
+    }
+    if (data.voidCells) {
+        bytes += voidCellBytes(*data.voidCells);
+    }
+    if (data.runningPeak) {
+        bytes += stateBytes(*data.runningPeak);
+    }
+    impl_->write(bytes, "checkpoint " + data.name, [&] { checkpointNow(data); });
+}
+
+void RunFile::checkpointNow(const CheckpointData& data) {
+    const std::string what = "writing checkpoint " + data.name;
+    guarded(impl_->path, what, [&] {
+        // A peak checkpoint is for reading, not for continuing: no runner state.
+        const std::string* runnerState = data.identity.peak ? nullptr : &data.runnerState;
+        const auto network = [&](H5::Group& g) {
+            if (data.network) {
+                writeContacts(g, *data.network);
+                writeShapeOutlines(g, data.state->shapes);
+            }
+            if (data.voidCells) {
+                writeVoidCells(g, *data.voidCells);
+            }
+            if (data.runningPeak) {
+                H5::Group peak = g.createGroup("running_peak");
+                writeState(peak, *data.runningPeak);
+            }
+        };
+        impl_->writeStateGroup("checkpoints", data.name, *data.state, runnerState, {},
+                               &data.identity, network);
+        if (data.identity.peak) {
+            // Where the test's peak is, for readers (also the checkpoint's attribute peak).
+            H5::Group tests = impl_->file.openGroup("tests");
+            const std::string link = linkName(data.identity.test);
+            if (tests.nameExists(link)) {
+                H5::Group test = tests.openGroup(link);
+                writeAttribute(test, "peak_checkpoint", data.name);
+                impl_->flushNow();
+            }
+        }
+    });
 }
 
 void RunFile::checkpointNow(const std::string& name, const SimulationState& state,
@@ -605,11 +680,7 @@ void RunFile::sampleNow(double pressure, const SimulationState& state) {
 }
 
 void RunFile::voidCells(const std::string& name, const VoidCellSet& cells) {
-    std::uint64_t grains = 0;
-    for (const VoidCell& c : cells.cells) {
-        grains += c.grains.size();
-    }
-    impl_->write(cells.cells.size() * 56 + grains * 4, "the void cells of checkpoint " + name,
+    impl_->write(voidCellBytes(cells), "the void cells of checkpoint " + name,
                  [&] { voidCellsNow(name, cells); });
 }
 
@@ -619,31 +690,7 @@ void RunFile::voidCellsNow(const std::string& name, const VoidCellSet& cells) {
         if (checkpoint.nameExists("void_cells")) {
             checkpoint.unlink("void_cells");
         }
-        H5::Group g = checkpoint.createGroup("void_cells");
-        std::vector<std::int32_t> valence, grains;
-        std::vector<std::int64_t> offsets{0};
-        std::vector<double> area, elongation, direction, centroid1, centroid2;
-        for (const VoidCell& c : cells.cells) {
-            valence.push_back(c.valence);
-            area.push_back(c.area);
-            elongation.push_back(c.elongation);
-            direction.push_back(c.direction);
-            centroid1.push_back(c.centroid1);
-            centroid2.push_back(c.centroid2);
-            grains.insert(grains.end(), c.grains.begin(), c.grains.end());
-            offsets.push_back(static_cast<std::int64_t>(grains.size()));
-        }
-        writeArray(g, "valence", valence, "-");
-        writeArray(g, "area", area, "m^2");
-        writeArray(g, "elongation", elongation, "-");
-        writeArray(g, "direction", direction, "rad");
-        writeArray(g, "centroid1", centroid1, "m");
-        writeArray(g, "centroid2", centroid2, "m");
-        writeArray(g, "grains", grains, "-");
-        writeArray(g, "grain_offsets", offsets, "-");
-        writeArray(g, "valence_histogram", cells.valenceHistogram, "-");
-        writeAttribute(g, "mean_valence", cells.meanValence);
-        writeAttribute(g, "cellular", static_cast<std::int32_t>(cells.cellular));
+        writeVoidCells(checkpoint, cells);
         impl_->flushNow();
     });
 }
@@ -655,14 +702,19 @@ namespace {
 template <class F>
 auto withFile(const std::string& path, const std::string& what, F&& f) {
     return guarded(path, what, [&] {
-        H5::H5File file =
-            openFile(path, H5F_ACC_RDONLY, H5::FileAccPropList::DEFAULT, "opening it to read");
-        checkFormatVersion(file, path);
+        H5::H5File file = hdf5io::openRunFileToRead(path);
         return f(file);
     });
 }
 
 } // namespace
+
+H5::H5File hdf5io::openRunFileToRead(const std::string& path) {
+    H5::H5File file =
+        openFile(path, H5F_ACC_RDONLY, H5::FileAccPropList::DEFAULT, "opening it to read");
+    checkFormatVersion(file, path);
+    return file;
+}
 
 std::string checkpointGroup(const std::string& name) {
     return "/checkpoints/" + linkName(name);
@@ -670,6 +722,10 @@ std::string checkpointGroup(const std::string& name) {
 
 std::string sampleGroup(double pressure) {
     return fmt::format("/samples/{}Pa", pressure);
+}
+
+std::string runningPeakGroup(const std::string& name) {
+    return checkpointGroup(name) + "/running_peak";
 }
 
 SimulationState readState(const std::string& path, const std::string& groupPath) {
@@ -709,6 +765,10 @@ std::vector<CheckpointInfo> listCheckpointInfo(const std::string& path) {
                 info.test = readStringAttribute(g, "test");
                 info.pressure = readAttribute<double>(g, "pressure");
                 info.axialStrain = readAttribute<double>(g, "axial_strain");
+            }
+            if (g.attrExists("peak") && readAttribute<std::int32_t>(g, "peak") != 0) {
+                info.peak = true;
+                info.peakStressRatio = readAttribute<double>(g, "q_over_p");
             }
             out.push_back(std::move(info));
         }

@@ -1,7 +1,8 @@
 #pragma once
 // HDF5 helpers of the run file (private to the engine): typed attributes and datasets, UTF-8
-// variable-length strings, and the state layout of checkpoints and samples (docs/formats.md).
-// Used by run_file.cpp and run_file_state.cpp on the thread that reads or writes the file.
+// variable-length strings, the state layout of checkpoints and samples, and a checkpoint's
+// contacts, void cells and shape outlines (docs/formats.md). Used by run_file.cpp,
+// run_file_state.cpp and run_file_network.cpp on the thread that reads or writes the file.
 
 #include <H5Cpp.h>
 
@@ -16,7 +17,9 @@
 
 #include <fmt/format.h>
 
+#include "grainlab/contact_network.h"
 #include "grainlab/simulation_state.h"
+#include "grainlab/void_cells.h"
 
 namespace grainlab::hdf5io {
 
@@ -491,11 +494,52 @@ inline std::vector<std::string> readStringArray(const H5::DataSet& ds, const std
     return splitFixedText(buffer, size, n);
 }
 
+/// A two-dimensional dataset of `rows` x `columns` values, row-major, chunked and checksummed.
+template <class T>
+void writeMatrix(H5::Group& group, const std::string& name, const std::vector<T>& values,
+                 std::size_t rows, std::size_t columns, const char* unit) {
+    if (values.size() != rows * columns) {
+        throw std::invalid_argument(
+            fmt::format("{}: {} values for {} x {}", name, values.size(), rows, columns));
+    }
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!std::isfinite(values[i])) {
+            throw std::runtime_error(
+                fmt::format("{}[{}] is not finite; refusing to write a non-finite value", name, i));
+        }
+    }
+    const hsize_t dims[2] = {rows, columns};
+    const hsize_t chunk[2] = {std::max<hsize_t>(1, rows), std::max<hsize_t>(1, columns)};
+    H5::DSetCreatPropList layout;
+    layout.setChunk(2, chunk);
+    layout.setFletcher32();
+    H5::DataSet ds = group.createDataSet(name, H5Types<T>::file(), H5::DataSpace(2, dims), layout);
+    if (!values.empty()) {
+        ds.write(values.data(), H5Types<T>::memory());
+    }
+    writeHash(ds, values.data(), values.size() * sizeof(T));
+    writeAttribute(ds, "unit", std::string(unit));
+}
+
 // ---- the state layout (run_file_state.cpp) --------------------------------------------------
 
 /// Writes every field of `state` into the empty group `g`. Refuses non-finite values.
 void writeState(H5::Group& g, const SimulationState& state);
 /// Reads a group written by writeState, bit for bit.
 SimulationState readState(const H5::Group& g);
+
+// ---- a checkpoint's network (run_file_network.cpp) -------------------------------------------
+
+/// Writes the group `contacts` of checkpoint `g`: every touching contact of `network`, with
+/// its strong and load-bearing flags (the engine's measures), and the wrapped grain centres.
+void writeContacts(H5::Group& g, const ContactNetwork& network);
+/// Writes the group `void_cells` of checkpoint `g` (replacing one already there).
+void writeVoidCells(H5::Group& g, const VoidCellSet& cells);
+/// Writes shape_outline1/2 of checkpoint `g`: kShapeOutlinePoints points of each shape's
+/// outline in its body frame.
+void writeShapeOutlines(H5::Group& g, const std::vector<OvalShape>& shapes);
+
+/// Opens a run file read-only and checks its format version (a readable one).
+H5::H5File openRunFileToRead(const std::string& path);
 
 } // namespace grainlab::hdf5io

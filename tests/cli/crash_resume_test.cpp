@@ -2,7 +2,8 @@
 // two short shear tests) run to the end uninterrupted, then interrupted at many steps spread over
 // every stage by SIGKILL, SIGINT or SIGTERM (the GRAINLAB_TEST_STOP_AFTER_STEPS hook of
 // `grainlab run`), resumed with --resume, and required to give the same bits: every row of every
-// series in the CSVs and in the run file, the samples and the final state.
+// series in the CSVs and in the run file, the samples, each test's peak checkpoint (of q/p,
+// whose running maximum a resumed run takes over from its checkpoint) and the final state.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -96,6 +97,8 @@ struct RunRecord {
     std::map<std::string, SeriesTable> series;
     std::vector<double> samplePressures;
     std::vector<SimulationState> samples;
+    std::map<std::string, CheckpointInfo> peakInfo; ///< by test
+    std::map<std::string, SimulationState> peaks;   ///< by test
     SimulationState last;
 };
 
@@ -109,6 +112,13 @@ RunRecord readRun(const fs::path& folder) {
     r.samplePressures = listSamples(file);
     for (double p : r.samplePressures) {
         r.samples.push_back(readState(file, sampleGroup(p)));
+    }
+    for (const CheckpointInfo& info : listCheckpointInfo(file)) {
+        if (info.peak) {
+            EXPECT_EQ(r.peakInfo.count(info.test), 0u) << "two peak checkpoints of " << info.test;
+            r.peakInfo[info.test] = info;
+            r.peaks[info.test] = readState(file, checkpointGroup(info.name));
+        }
     }
     r.last = readState(file, checkpointGroup(listCheckpoints(file).back()));
     return r;
@@ -145,6 +155,20 @@ std::string differences(const RunRecord& a, const RunRecord& b) {
             }
         }
     }
+    if (a.peaks.size() != b.peaks.size()) {
+        out += fmt::format(" {} peak checkpoints against {};", b.peaks.size(), a.peaks.size());
+    }
+    for (const auto& [test, state] : a.peaks) {
+        const auto it = b.peaks.find(test);
+        if (it == b.peaks.end()) {
+            out += " no peak checkpoint of " + test + ";";
+        } else if (!identicalDynamics(state, it->second) ||
+                   a.peakInfo.at(test).peakStressRatio != b.peakInfo.at(test).peakStressRatio ||
+                   a.peakInfo.at(test).axialStrain != b.peakInfo.at(test).axialStrain) {
+            out += fmt::format(" peak checkpoint of {} (step {} against {});", test,
+                               it->second.step, state.step);
+        }
+    }
     if (!identicalDynamics(a.last, b.last)) {
         out += fmt::format(" final state (step {} against {});", b.last.step, a.last.step);
     }
@@ -163,6 +187,7 @@ TEST(CrashResume, EveryInterruptionResumesToTheSameBits) {
     const int wholeStatus = runGrainlab({"run", experiment.string(), "--out", whole.string()});
     ASSERT_TRUE(WIFEXITED(wholeStatus) && WEXITSTATUS(wholeStatus) == 0);
     const RunRecord reference = readRun(whole);
+    ASSERT_EQ(reference.peaks.size(), 2u) << "one peak checkpoint per shear test";
 
     // Where the stages are, in steps of one uninterrupted process: the compaction runs from
     // step 0; each test starts from its sample's step, after everything before it.

@@ -42,10 +42,9 @@ TEST(RunFileIdentity, CheckpointsAndRowsCarryTheirStage) {
     struct Recorder : RunFile {
         using RunFile::RunFile;
         std::map<std::string, StageIdentity> seen;
-        void checkpoint(const std::string& name, const SimulationState& state,
-                        const std::string& runnerState, const StageIdentity& id) override {
-            seen[name] = id;
-            RunFile::checkpoint(name, state, runnerState, id);
+        void checkpoint(const CheckpointData& data) override {
+            seen[data.name] = data.identity;
+            RunFile::checkpoint(data);
         }
     };
     std::map<std::string, StageIdentity> seen;

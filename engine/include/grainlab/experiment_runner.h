@@ -39,6 +39,10 @@ struct ResumePoint {
     std::string runnerState;               ///< the runner's own state, as checkpoint() wrote it
     std::map<double, SimulationState> samples; ///< compacted samples by pressure [Pa]
     std::vector<SeriesTable> series;       ///< the series as recorded up to the checkpoint
+    /// The state at the running maximum of q/p of the shear test under way, when the runner
+    /// state names a checkpoint that keeps it (runningPeakCheckpoint(); the run file's group
+    /// running_peak of that checkpoint). Empty otherwise.
+    std::optional<SimulationState> runningPeak;
 };
 
 /// The engine threads a run of `config` uses: its `threads`, but one thread per 2000 grains at
@@ -75,6 +79,10 @@ public:
     static bool finishedAt(const std::string& runnerState);
     /// Rows per test in a runner state string: what a resumed run keeps of each series.
     static std::map<std::string, std::size_t> seriesRowsAtCheckpoint(const std::string& runnerState);
+    /// The checkpoint whose running peak (the state at the largest q/p so far of the shear test
+    /// under way) a run resumed from this runner state needs in ResumePoint::runningPeak; ""
+    /// when it needs none (no test under way, or the peak is at the checkpoint's own step).
+    static std::string runningPeakCheckpoint(const std::string& runnerState);
 
 private:
     struct Impl;

@@ -1,7 +1,9 @@
 #pragma once
 // The HDF5 run file (SPEC §5; layout in docs/formats.md): the experiment text, the software
 // version, every test's time series, the compacted samples and complete checkpoints
-// (SimulationState + runner state) from which a run continues bit for bit.
+// (SimulationState + runner state) from which a run continues bit for bit, each with its
+// contacts (forces, normals, contact points) and void cells (polygons, second moments), and per
+// shear test a checkpoint at the peak of q/p.
 //
 // RunFile is the writer: it implements RunOutput and is driven by the experiment runner on the
 // engine thread (the GUI's worker thread, or the main thread headless). One RunFile per file,
@@ -25,8 +27,14 @@ namespace grainlab {
 
 /// Format of the layout written by this version (root attribute `format_version`). Version 2:
 /// checksummed (Fletcher32) chunked datasets, fixed-length text, stage identity attributes.
-/// Files of another version are refused by every reader, naming the version.
-inline constexpr int kRunFileFormatVersion = 2;
+/// Version 3 adds to each checkpoint its contacts, the void cells' polygons and second moments,
+/// the shapes' outlines, the attribute `peak`, and the peak checkpoint of each shear test (whose
+/// running maximum a resumed run continues from the runner state). Readers read versions 2 and
+/// 3 (what a version-2 file lacks is absent); only a version-3 file is continued (Mode::Resume).
+inline constexpr int kRunFileFormatVersion = 3;
+inline constexpr int kRunFileOldestReadableVersion = 2;
+/// Points of each shape's outline in a checkpoint (shape_outline1/2) [-].
+inline constexpr int kShapeOutlinePoints = 48;
 
 class RunFile : public RunOutput {
 public:
@@ -60,6 +68,11 @@ public:
     /// Writes /checkpoints/<name>/void_cells: one row per void cell (valence, area, elongation,
     /// direction, centroid, its grains as CSR) and the valence histogram.
     void voidCells(const std::string& name, const VoidCellSet& cells) override;
+    /// Writes /checkpoints/<name> whole before it appears under its name: the state, the
+    /// runner state (not for a peak checkpoint), the identity, the contacts with the shapes'
+    /// outlines, the void cells and the running peak; for a peak checkpoint also the attribute
+    /// peak_checkpoint of its test. Flushes.
+    void checkpoint(const CheckpointData& data) override;
     /// Flushes everything written so far to disk.
     void flush();
 
@@ -71,6 +84,7 @@ private:
                        const std::string& runnerState, const StageIdentity* identity);
     void sampleNow(double pressure, const SimulationState& state);
     void voidCellsNow(const std::string& name, const VoidCellSet& cells);
+    void checkpointNow(const CheckpointData& data);
 
     struct Impl;
     std::unique_ptr<Impl> impl_;
@@ -80,6 +94,8 @@ private:
 std::string checkpointGroup(const std::string& name);
 /// Group of the sample at `pressure` [Pa]: "/samples/<pressure>Pa", e.g. "/samples/15000Pa".
 std::string sampleGroup(double pressure);
+/// Group of the running peak kept in checkpoint `name`: "<checkpointGroup(name)>/running_peak".
+std::string runningPeakGroup(const std::string& name);
 
 /// The state stored in `groupPath` (a checkpoint or a sample), bit for bit as written.
 SimulationState readState(const std::string& path, const std::string& groupPath);
@@ -95,11 +111,42 @@ struct CheckpointInfo {
     double pressure = 0;   ///< [Pa]
     std::int64_t step = 0;
     double axialStrain = 0; ///< eps1 of its test [-]
+    bool peak = false;      ///< the checkpoint at the peak of q/p of its test
+    double peakStressRatio = 0; ///< q/p there [-] (peak checkpoints only)
 };
 /// Every complete checkpoint with its identity, in write order.
 std::vector<CheckpointInfo> listCheckpointInfo(const std::string& path);
 /// The orientations at the start of the checkpoint's test [rad] (empty if not recorded).
 std::vector<double> readThetaAtTestStart(const std::string& path, const std::string& name);
+/// The contacts stored with a checkpoint (dataset names in docs/formats.md), one entry per
+/// touching contact in the engine's order. Empty vectors for a checkpoint without contacts (a
+/// version-2 file).
+struct StoredContacts {
+    std::vector<std::int32_t> first, second, shift1, shift2;
+    std::vector<double> normal1, normal2; ///< unit normal from first to second [-]
+    std::vector<double> point1, point2;   ///< contact point, world coordinates [m]
+    std::vector<double> branch1, branch2; ///< x_second + h k - x_first [m]
+    std::vector<double> overlap;          ///< [m]
+    std::vector<double> normalForce;      ///< [N]
+    std::vector<double> tangentialForce;  ///< [N]
+    std::vector<std::uint8_t> sliding, strong, loadBearing;
+    std::vector<double> centre1, centre2; ///< grain centres wrapped into the cell [m]
+    double strongThreshold = 0;           ///< [N]
+};
+StoredContacts readContacts(const std::string& path, const std::string& name);
+/// The void cells stored with a checkpoint, one entry per cell (vertex lists as CSR).
+struct StoredVoidCells {
+    std::vector<std::int32_t> valence;
+    std::vector<double> area, centroid1, centroid2;                     ///< [m^2], [m]
+    std::vector<double> secondMoment11, secondMoment22, secondMoment12; ///< [m^4]
+    std::vector<double> elongation, direction;                          ///< [-], [rad]
+    std::vector<std::int32_t> grains;
+    std::vector<std::int64_t> grainOffsets;
+    std::vector<double> vertices1, vertices2; ///< world coordinates [m] (empty in version 2)
+    std::vector<std::int64_t> vertexOffsets;
+    std::vector<std::int32_t> valenceHistogram;
+};
+StoredVoidCells readVoidCells(const std::string& path, const std::string& name);
 /// Sample pressures [Pa] in write order.
 std::vector<double> listSamples(const std::string& path);
 /// Test names in the order their first record was written.

@@ -1,6 +1,7 @@
 #pragma once
 // The interface through which the experiment runner hands out what a run produces: series
-// records, checkpoints with the identity of their stage, compacted samples and void cells.
+// records, checkpoints with the identity of their stage, their contacts and void cells, and
+// compacted samples.
 // Implemented by the run file (run_file.h), the run output folder of `grainlab run`, the
 // window's run adapter and tests. Called on the thread that drives the runner.
 
@@ -8,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "grainlab/contact_network.h"
 #include "grainlab/series.h"
 #include "grainlab/simulation_state.h"
 #include "grainlab/void_cells.h"
@@ -24,6 +26,26 @@ struct StageIdentity {
     /// Grain orientations at the start of the test, which rotation counts from [rad]: the
     /// sample's as its equilibration starts; the generated assembly's for the compaction.
     std::vector<double> thetaAtTestStart;
+    /// True for the checkpoint at the peak of q/p of a shear test (written when the test ends,
+    /// with the state of the record at which q/p was largest).
+    bool peak = false;
+    double peakStressRatio = 0; ///< q/p at that peak [-] (peak checkpoints only)
+};
+
+/// Everything of one checkpoint, handed out in one call so that a writer can store it as one
+/// unit (a run killed while writing it leaves either all of it or none). The pointers are valid
+/// for the call only.
+struct CheckpointData {
+    std::string name;
+    const SimulationState* state = nullptr; ///< the complete state (never null)
+    std::string runnerState;                ///< the runner's own state (JSON)
+    StageIdentity identity;
+    const ContactNetwork* network = nullptr; ///< its touching contacts (null: none stored)
+    const VoidCellSet* voidCells = nullptr;  ///< its void cells (null: none stored)
+    /// The state at the running maximum of q/p of the shear test so far, when the runner state
+    /// names this checkpoint as where it is kept (a resumed run continues the maximum from it;
+    /// see ExperimentRunner::runningPeakCheckpoint). Null otherwise.
+    const SimulationState* runningPeak = nullptr;
 };
 
 class RunOutput {
@@ -47,6 +69,15 @@ public:
     virtual void voidCells(const std::string& name, const VoidCellSet& cells) {
         (void)name;
         (void)cells;
+    }
+    /// A checkpoint with its contacts, void cells and the running peak: the runner calls this
+    /// one. By default it hands the checkpoint (with its identity) and its void cells to the
+    /// calls above and drops the contacts and the running peak; the run file stores it all.
+    virtual void checkpoint(const CheckpointData& data) {
+        checkpoint(data.name, *data.state, data.runnerState, data.identity);
+        if (data.voidCells) {
+            voidCells(data.name, *data.voidCells);
+        }
     }
 };
 

@@ -1,0 +1,238 @@
+// A checkpoint's contact network in the run file (docs/formats.md, "Contacts", "Void cells",
+// "Shape outlines"): what a reader needs to draw force chains, void cells and grains and to
+// compute the contact measures without the oval geometry. Written from the engine's own
+// ContactNetwork (Simulation::contactNetwork) and VoidCellSet (computeVoidCells), with the
+// strong/weak split and the load-bearing graph of measures.h.
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "grainlab/measures.h"
+#include "grainlab/run_file.h"
+#include "run_file_io.h"
+
+namespace grainlab {
+
+namespace hdf5io {
+
+void writeContacts(H5::Group& checkpoint, const ContactNetwork& network) {
+    if (checkpoint.nameExists("contacts")) {
+        checkpoint.unlink("contacts");
+    }
+    H5::Group g = checkpoint.createGroup("contacts");
+    const std::size_t n = network.contacts.size();
+    std::vector<std::int32_t> first(n), second(n), shift1(n), shift2(n);
+    std::vector<double> normal1(n), normal2(n), point1(n), point2(n), branch1(n), branch2(n);
+    std::vector<double> overlap(n), normalForce(n), tangentialForce(n);
+    std::vector<std::uint8_t> sliding(n), strong(n);
+    // The engine's split (StrongForceThreshold::RmsForce, the measures' default): strong when
+    // |f| = sqrt(f_n^2 + f_t^2) exceeds the threshold.
+    const double threshold = strongForceThreshold(network, StrongForceThreshold::RmsForce);
+    for (std::size_t c = 0; c < n; ++c) {
+        const ContactRecord& r = network.contacts[c];
+        first[c] = r.first;
+        second[c] = r.second;
+        shift1[c] = r.shift1;
+        shift2[c] = r.shift2;
+        normal1[c] = r.normal1;
+        normal2[c] = r.normal2;
+        point1[c] = network.x1[r.first] + r.point1;
+        point2[c] = network.x2[r.first] + r.point2;
+        branch1[c] = r.branch1;
+        branch2[c] = r.branch2;
+        overlap[c] = r.overlap;
+        normalForce[c] = r.normalForce;
+        tangentialForce[c] = r.tangentialForce;
+        sliding[c] = r.sliding ? 1 : 0;
+        strong[c] = std::hypot(r.normalForce, r.tangentialForce) > threshold ? 1 : 0;
+    }
+    writeAttribute(g, "count", std::int64_t(n));
+    writeAttribute(g, "strong_threshold", threshold);
+    writeArray(g, "first", first, "-");
+    writeArray(g, "second", second, "-");
+    writeArray(g, "shift1", shift1, "-");
+    writeArray(g, "shift2", shift2, "-");
+    writeArray(g, "normal1", normal1, "-");
+    writeArray(g, "normal2", normal2, "-");
+    writeArray(g, "point1", point1, "m");
+    writeArray(g, "point2", point2, "m");
+    writeArray(g, "branch1", branch1, "m");
+    writeArray(g, "branch2", branch2, "m");
+    writeArray(g, "overlap", overlap, "m");
+    writeArray(g, "normal_force", normalForce, "N");
+    writeArray(g, "tangential_force", tangentialForce, "N");
+    writeArray(g, "sliding", sliding, "-");
+    writeArray(g, "strong", strong, "-");
+    writeArray(g, "load_bearing", loadBearingGraph(network).contactInGraph, "-");
+    writeArray(g, "centre1", network.x1, "m");
+    writeArray(g, "centre2", network.x2, "m");
+}
+
+void writeVoidCells(H5::Group& checkpoint, const VoidCellSet& cells) {
+    if (checkpoint.nameExists("void_cells")) {
+        checkpoint.unlink("void_cells");
+    }
+    H5::Group g = checkpoint.createGroup("void_cells");
+    std::vector<std::int32_t> valence, grains;
+    std::vector<std::int64_t> offsets{0}, vertexOffsets{0};
+    std::vector<double> area, elongation, direction, centroid1, centroid2;
+    std::vector<double> j11, j22, j12, vertices1, vertices2;
+    for (const VoidCell& c : cells.cells) {
+        valence.push_back(c.valence);
+        area.push_back(c.area);
+        elongation.push_back(c.elongation);
+        direction.push_back(c.direction);
+        centroid1.push_back(c.centroid1);
+        centroid2.push_back(c.centroid2);
+        j11.push_back(c.secondMoment[0]);
+        j22.push_back(c.secondMoment[1]);
+        j12.push_back(c.secondMoment[2]);
+        grains.insert(grains.end(), c.grains.begin(), c.grains.end());
+        offsets.push_back(static_cast<std::int64_t>(grains.size()));
+        // The polygon about its wrapped centroid: contiguous, and near the cell.
+        for (std::size_t k = 0; k < c.vertices1.size(); ++k) {
+            vertices1.push_back(c.centroid1 + c.vertices1[k]);
+            vertices2.push_back(c.centroid2 + c.vertices2[k]);
+        }
+        vertexOffsets.push_back(static_cast<std::int64_t>(vertices1.size()));
+    }
+    writeArray(g, "valence", valence, "-");
+    writeArray(g, "area", area, "m^2");
+    writeArray(g, "elongation", elongation, "-");
+    writeArray(g, "direction", direction, "rad");
+    writeArray(g, "centroid1", centroid1, "m");
+    writeArray(g, "centroid2", centroid2, "m");
+    writeArray(g, "second_moment11", j11, "m^4");
+    writeArray(g, "second_moment22", j22, "m^4");
+    writeArray(g, "second_moment12", j12, "m^4");
+    writeArray(g, "grains", grains, "-");
+    writeArray(g, "grain_offsets", offsets, "-");
+    writeArray(g, "vertices1", vertices1, "m");
+    writeArray(g, "vertices2", vertices2, "m");
+    writeArray(g, "vertex_offsets", vertexOffsets, "-");
+    writeArray(g, "valence_histogram", cells.valenceHistogram, "-");
+    writeAttribute(g, "mean_valence", cells.meanValence);
+    writeAttribute(g, "cellular", static_cast<std::int32_t>(cells.cellular));
+}
+
+void writeShapeOutlines(H5::Group& checkpoint, const std::vector<OvalShape>& shapes) {
+    constexpr int k = kShapeOutlinePoints;
+    std::vector<double> x(shapes.size() * k), y(shapes.size() * k);
+    for (std::size_t s = 0; s < shapes.size(); ++s) {
+        for (int i = 0; i < k; ++i) {
+            // Even in the normal's angle: more points where the outline bends most (the ends).
+            const auto p = shapes[s].boundaryPoint(2.0 * std::numbers::pi * i / k);
+            x[s * k + i] = p[0];
+            y[s * k + i] = p[1];
+        }
+    }
+    writeMatrix(checkpoint, "shape_outline1", x, shapes.size(), k, "m");
+    writeMatrix(checkpoint, "shape_outline2", y, shapes.size(), k, "m");
+}
+
+} // namespace hdf5io
+
+using namespace hdf5io;
+
+namespace {
+
+template <class F>
+auto withCheckpoint(const std::string& path, const std::string& name, const std::string& what,
+                    F&& f) {
+    return guarded(path, what + " of checkpoint " + name, [&] {
+        const H5::H5File file = openRunFileToRead(path);
+        return f(file.openGroup(checkpointGroup(name)));
+    });
+}
+
+/// Refuses a column whose length is not `n` (a damaged or foreign file).
+template <class T>
+std::vector<T> column(const H5::Group& g, const std::string& name, std::size_t n) {
+    std::vector<T> v = readArray<T>(g, name);
+    if (v.size() != n) {
+        throw std::runtime_error(fmt::format("dataset {}/{} has {} values, expected {}",
+                                             objectName(g), name, v.size(), n));
+    }
+    return v;
+}
+
+/// Refuses CSR offsets that do not run from 0 to `size` without decreasing.
+void checkOffsets(const std::vector<std::int64_t>& offsets, std::size_t size,
+                  const std::string& what) {
+    bool ok = !offsets.empty() && offsets.front() == 0 &&
+              offsets.back() == static_cast<std::int64_t>(size);
+    for (std::size_t k = 1; ok && k < offsets.size(); ++k) {
+        ok = offsets[k] >= offsets[k - 1];
+    }
+    if (!ok) {
+        throw std::runtime_error(
+            fmt::format("{}: offsets that do not index {} values", what, size));
+    }
+}
+
+} // namespace
+
+StoredContacts readContacts(const std::string& path, const std::string& name) {
+    return withCheckpoint(path, name, "reading the contacts", [&](const H5::Group& cp) {
+        StoredContacts c;
+        if (!cp.nameExists("contacts")) {
+            return c;
+        }
+        const H5::Group g = cp.openGroup("contacts");
+        c.first = readArray<std::int32_t>(g, "first");
+        const std::size_t n = c.first.size();
+        c.second = column<std::int32_t>(g, "second", n);
+        c.shift1 = column<std::int32_t>(g, "shift1", n);
+        c.shift2 = column<std::int32_t>(g, "shift2", n);
+        c.normal1 = column<double>(g, "normal1", n);
+        c.normal2 = column<double>(g, "normal2", n);
+        c.point1 = column<double>(g, "point1", n);
+        c.point2 = column<double>(g, "point2", n);
+        c.branch1 = column<double>(g, "branch1", n);
+        c.branch2 = column<double>(g, "branch2", n);
+        c.overlap = column<double>(g, "overlap", n);
+        c.normalForce = column<double>(g, "normal_force", n);
+        c.tangentialForce = column<double>(g, "tangential_force", n);
+        c.sliding = column<std::uint8_t>(g, "sliding", n);
+        c.strong = column<std::uint8_t>(g, "strong", n);
+        c.loadBearing = column<std::uint8_t>(g, "load_bearing", n);
+        c.centre1 = readArray<double>(g, "centre1");
+        c.centre2 = column<double>(g, "centre2", c.centre1.size());
+        c.strongThreshold = readAttribute<double>(g, "strong_threshold");
+        return c;
+    });
+}
+
+StoredVoidCells readVoidCells(const std::string& path, const std::string& name) {
+    return withCheckpoint(path, name, "reading the void cells", [&](const H5::Group& cp) {
+        StoredVoidCells v;
+        if (!cp.nameExists("void_cells")) {
+            return v;
+        }
+        const H5::Group g = cp.openGroup("void_cells");
+        v.valence = readArray<std::int32_t>(g, "valence");
+        const std::size_t n = v.valence.size();
+        v.area = column<double>(g, "area", n);
+        v.centroid1 = column<double>(g, "centroid1", n);
+        v.centroid2 = column<double>(g, "centroid2", n);
+        v.elongation = column<double>(g, "elongation", n);
+        v.direction = column<double>(g, "direction", n);
+        v.grains = readArray<std::int32_t>(g, "grains");
+        v.grainOffsets = column<std::int64_t>(g, "grain_offsets", n + 1);
+        checkOffsets(v.grainOffsets, v.grains.size(), objectName(g) + "/grain_offsets");
+        v.valenceHistogram = readArray<std::int32_t>(g, "valence_histogram");
+        if (g.nameExists("vertices1")) { // format 3 on
+            v.secondMoment11 = column<double>(g, "second_moment11", n);
+            v.secondMoment22 = column<double>(g, "second_moment22", n);
+            v.secondMoment12 = column<double>(g, "second_moment12", n);
+            v.vertices1 = readArray<double>(g, "vertices1");
+            v.vertices2 = column<double>(g, "vertices2", v.vertices1.size());
+            v.vertexOffsets = column<std::int64_t>(g, "vertex_offsets", n + 1);
+            checkOffsets(v.vertexOffsets, v.vertices1.size(), objectName(g) + "/vertex_offsets");
+        }
+        return v;
+    });
+}
+
+} // namespace grainlab
