@@ -10,12 +10,15 @@
 #include "bench/bench.h"
 #include "cli/run_command.h"
 #include "report/report_command.h"
+#include "stability/stability_cell.h"
+#include "stability/stability_command.h"
 #include "study/study_command.h"
 
 #ifdef GRAINLAB_WITH_GUI
 #include "bench/window_bench.h"
 #include "gui/app.h"
 #include "report/report_figures_writer.h"
+#include "stability/stability_figures_writer.h"
 #include "study/study_figures_writer.h"
 #endif
 
@@ -104,6 +107,34 @@ int runCommandLine(int argc, char** argv) {
     reproduceCommand->add_option("--out", reproduce.out, "folder (study/, report/)")->required();
     reproduceCommand->add_flag("--quiet", reproduce.quiet, "no progress bar");
 
+    StabilityOptions stability;
+    auto* stabilityCommand = app.add_subcommand(
+        "stability", "measure where the explicit integration fails: the largest stable time "
+                     "step over shape, stiffness ratio, damping and packing (docs/stability.md)");
+    stabilityCommand->add_option("preset_file", stability.presetFile, "stability preset (.json)");
+    stabilityCommand->add_option("--preset", stability.preset,
+                                 "a preset of resources/stability (tiny, full)");
+    stabilityCommand->add_option("--out", stability.out, "map folder (cells/, limits.csv)");
+    stabilityCommand
+        ->add_option("--jobs", stability.jobs, "cells at once (default: the processors)")
+        ->check(CLI::Range(1, 1024));
+    stabilityCommand
+        ->add_option("--emit", stability.emit,
+                     "write the cells as a Slurm job array (slurm) or a GNU parallel job list "
+                     "(parallel) instead of running them")
+        ->check(CLI::IsMember({"slurm", "parallel"}));
+    stabilityCommand->add_flag("--quiet", stability.quiet, "no progress bar");
+    std::string stabilityFolder, stabilityCell;
+    auto* stabilityCellCommand =
+        stabilityCommand->add_subcommand("cell", "measure one cell of a map folder");
+    stabilityCellCommand->add_option("folder", stabilityFolder, "the map folder")->required();
+    stabilityCellCommand->add_option("--cell", stabilityCell, "the cell's id")->required();
+    stabilityCellCommand->add_flag("--quiet", stability.quiet, "print nothing but errors");
+    auto* stabilityCollectCommand = stabilityCommand->add_subcommand(
+        "collect", "write limits.csv (and figures) of a map folder whose cells ran elsewhere");
+    stabilityCollectCommand->add_option("folder", stabilityFolder, "the map folder")->required();
+    stabilityCollectCommand->add_flag("--quiet", stability.quiet, "print nothing but errors");
+
     std::string experiment = std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json";
     app.add_option("--experiment", experiment, "experiment to open in the window");
 
@@ -126,6 +157,7 @@ int runCommandLine(int argc, char** argv) {
 #ifdef GRAINLAB_WITH_GUI
         report.figures = writeReportFiguresHeadless;
         reproduce.figures = writeReportFiguresHeadless;
+        stability.figures = writeStabilityFiguresHeadless;
 #endif
         if (*reportCommand) {
             return runReportCommand(report);
@@ -133,6 +165,21 @@ int runCommandLine(int argc, char** argv) {
         if (*reproduceCommand) {
             reproduce.grainlab = executablePath(argv[0]);
             return runReproduceCommand(reproduce);
+        }
+        if (*stabilityCellCommand) {
+            return runStabilityCellCommand(stabilityFolder, stabilityCell, stability.quiet);
+        }
+        if (*stabilityCollectCommand) {
+            return collectStabilityCommand(stabilityFolder, stability.quiet, stability.figures);
+        }
+        if (*stabilityCommand) {
+            if (stability.out.empty() || stability.preset.empty() == stability.presetFile.empty()) {
+                fmt::print(stderr, "grainlab stability: give --preset NAME or a preset file, and "
+                                   "--out DIR\n");
+                return 2;
+            }
+            stability.grainlab = executablePath(argv[0]);
+            return runStabilityCommand(stability);
         }
         if (*collectCommand) {
             return collectStudyCommand(collectFolder, study.quiet, study.figures);

@@ -1,5 +1,6 @@
 #include "study/job_list.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -92,6 +93,43 @@ std::string slurmScript(const StudyLayout& layout, const std::string& studyName,
     s += fmt::format("  exec {} run {}/\"$run\".json --out {}/\"$run\" --quiet\n",
                      shellQuote(layout.grainlab), experiments, runs_);
     s += "fi\n";
+    return s;
+}
+
+std::string shellLine(const std::vector<std::string>& argv) {
+    return joined(argv);
+}
+
+std::string slurmArrayScript(const std::string& jobName, const std::string& comment,
+                             const std::string& logFolder,
+                             const std::vector<std::vector<std::string>>& commands, int threads) {
+    std::string s = "#!/bin/bash\n";
+    std::size_t from = 0;
+    while (from < comment.size()) {
+        const std::size_t end = std::min(comment.find('\n', from), comment.size());
+        s += "# " + comment.substr(from, end - from) + "\n";
+        from = end + 1;
+    }
+    s += fmt::format("#SBATCH --job-name={}\n", jobName);
+    s += fmt::format("#SBATCH --array=0-{}\n", commands.empty() ? 0 : commands.size() - 1);
+    s += "#SBATCH --ntasks=1\n";
+    s += fmt::format("#SBATCH --cpus-per-task={}\n", threads < 1 ? 1 : threads);
+    s += fmt::format("#SBATCH --output={}\n", (fs::path(logFolder) / "slurm-%A_%a.log").string());
+    s += "set -euo pipefail\n";
+    s += "tasks=(\n";
+    for (const auto& argv : commands) {
+        s += "  " + shellQuote(joined(argv)) + "\n";
+    }
+    s += ")\n";
+    s += "eval \"exec ${tasks[$SLURM_ARRAY_TASK_ID]}\"\n";
+    return s;
+}
+
+std::string commandJobList(const std::vector<std::vector<std::string>>& commands) {
+    std::string s;
+    for (const auto& argv : commands) {
+        s += joined(argv) + "\n";
+    }
     return s;
 }
 

@@ -37,4 +37,17 @@ std::string parallelJobList(const StudyLayout& layout, const std::vector<std::st
 /// `s` quoted for a POSIX shell.
 std::string shellQuote(const std::string& s);
 
+/// One shell command line running `argv` (every argument quoted).
+std::string shellLine(const std::vector<std::string>& argv);
+
+/// A Slurm batch script with a job array of one task per command (any argv, e.g. the cells of a
+/// stability map), `threads` processors each; `comment` (lines without '#') heads the script
+/// and each task's output goes to `logFolder`/slurm-<job>_<task>.log.
+std::string slurmArrayScript(const std::string& jobName, const std::string& comment,
+                             const std::string& logFolder,
+                             const std::vector<std::vector<std::string>>& commands, int threads);
+
+/// A GNU parallel job list: one shellLine per command.
+std::string commandJobList(const std::vector<std::vector<std::string>>& commands);
+
 } // namespace grainlab

@@ -112,7 +112,7 @@ void Simulation::integrate() {
                                   "non-finite position or velocity (numerical blow-up)");
         }
         const double travel = dt * (v + std::fabs(g.omega[i]) * halfWidth_[i]);
-        if (travel > stepLimit_[i]) {
+        if (travel > stepLimit_[i] && !s_.parameters.stability.unguarded) {
             throw SimulationError(
                 s_.step + 1, std::int32_t(i),
                 fmt::format("runaway motion: moved {:.3g} m in one step, more than {} of its "

@@ -49,6 +49,10 @@ struct StabilityParameters {
     double maxOverlapFraction = 0.1;  ///< overlap above this fraction of the smaller width: blow-up
     double maxStepFraction = 0.1;     ///< a step moving a grain more than this fraction of its
                                       ///< half-height: runaway (kinetic energy without bound)
+    /// Stability probes only (stability_probe.h), never set from a file: no refusal of a time
+    /// step above the estimate, no overlap or runaway stop (the guards being measured). A
+    /// non-finite state still stops the run.
+    bool unguarded = false;
 };
 
 struct SimulationParameters {

@@ -1,0 +1,344 @@
+// See stability_map.h.
+#include "grainlab/stability_map.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "grainlab/strict_json.h"
+
+namespace grainlab {
+namespace {
+
+/// A number short and exact enough for ids and labels: 0.05, 15, 1e+05.
+std::string shortNumber(double v) {
+    return fmt::format("{:.6g}", v);
+}
+
+/// The object at index i of the array `key` of `parent`, as a section.
+JsonSection element(const std::string& file, const JsonSection& parent, const std::string& key,
+                    std::size_t i, std::vector<std::string> known) {
+    return JsonSection(file, parent.at(key)[i], fmt::format("{}[{}]", parent.path(key), i),
+                       std::move(known));
+}
+
+/// The array at `key` of `parent`, non-empty; refuses anything else.
+std::size_t arrayLength(const JsonSection& parent, const std::string& key,
+                        const std::string& what) {
+    if (!parent.has(key)) {
+        parent.missing(key, "a non-empty array of " + what);
+    }
+    const Json& v = parent.at(key);
+    if (!v.is_array() || v.empty()) {
+        parent.refuse(key, v, "a non-empty array of " + what);
+    }
+    return v.size();
+}
+
+DampingParameters readDamping(const JsonSection& s) {
+    DampingParameters d;
+    const std::string kind = s.choice("kind", {"none", "viscous", "local"}, std::nullopt);
+    if (kind == "none") {
+        if (s.has("coefficient")) {
+            s.refuse("coefficient", s.at("coefficient"), "absent (kind none takes no coefficient)");
+        }
+        return {DampingKind::None, 0.0};
+    }
+    d.kind = kind == "viscous" ? DampingKind::GlobalViscous : DampingKind::CundallLocal;
+    // Viscous: a fraction of the critical damping; local: Cundall's alpha, below 1.
+    d.coefficient =
+        s.number("coefficient", kind == "viscous" ? openClosed(0, 1) : open(0, 1), std::nullopt);
+    return d;
+}
+
+PackingState readPacking(const JsonSection& s) {
+    PackingState p;
+    const std::string state = s.choice("state", {"gas", "dense", "shear"}, std::nullopt);
+    if (state == "gas") {
+        if (s.has("pressure")) {
+            s.refuse("pressure", s.at("pressure"), "absent (state gas takes no pressure)");
+        }
+        return p;
+    }
+    p.kind = state == "dense" ? PackingKind::Dense : PackingKind::Shear;
+    p.pressure = s.number("pressure", closed(1e2, 1e8), std::nullopt);
+    return p;
+}
+
+const char* packingName(PackingKind k) {
+    return k == PackingKind::Gas ? "gas" : (k == PackingKind::Dense ? "dense" : "shear");
+}
+
+const char* dampingName(DampingKind k) {
+    return k == DampingKind::None ? "none"
+                                  : (k == DampingKind::GlobalViscous ? "viscous" : "local");
+}
+
+/// A CSV field: quoted when it holds a comma or a quote.
+std::string field(const std::string& s) {
+    if (s.find_first_of(",\"") == std::string::npos) {
+        return s;
+    }
+    std::string out = "\"";
+    for (char c : s) {
+        out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    }
+    return out + "\"";
+}
+
+std::string number(double v) {
+    return std::isfinite(v) ? fmt::format("{:.9g}", v) : std::string();
+}
+
+std::string axesFields(const StabilityCell& c) {
+    return fmt::format("{},{},{},{},{},{},{},{}", field(c.id), number(c.aspectRatio),
+                       number(c.stiffnessRatio), dampingName(c.damping.kind),
+                       number(c.damping.coefficient), packingName(c.packing.kind),
+                       number(c.packing.pressure),
+                       field(dampingLabel(c.damping) + " / " + packingLabel(c.packing)));
+}
+
+const char* kAxesHeader = "cell,aspect_ratio [-],stiffness_ratio [-],damping,"
+                          "damping_coefficient [-],packing,pressure [Pa],label";
+
+} // namespace
+
+StabilityMapSpec readStabilityPreset(const std::string& path) {
+    StabilityMapSpec spec = parseStabilityPreset(readInputFile(path, "stability preset"), path);
+    spec.sourcePath = path;
+    return spec;
+}
+
+StabilityMapSpec parseStabilityPreset(const std::string& text, const std::string& file) {
+    const Json root = parseStrictJson(text, file);
+    StabilityMapSpec spec;
+    spec.sourceText = text;
+    const JsonSection top(file, root, "", {"name", "description", "scene", "probe", "axes"});
+    spec.name = top.text("name", spec.name);
+    if (spec.name.find_first_of("/\\ ") != std::string::npos) {
+        top.refuse("name", top.at("name"), "a name without spaces or slashes");
+    }
+    top.text("description", "-");
+
+    const JsonSection scene =
+        top.child("scene",
+                  {"grains", "smallest_width", "largest_width", "size_classes", "seed", "friction",
+                   "gas", "shear", "compaction_rate"},
+                  false);
+    spec.grains = int(scene.integer("grains", 16, 20000, spec.grains));
+    spec.smallestWidth = scene.number("smallest_width", positive(), spec.smallestWidth);
+    spec.largestWidth = scene.number("largest_width", Range{spec.smallestWidth, 1e300, true, true},
+                                     std::max(spec.largestWidth, spec.smallestWidth));
+    spec.sizeClasses = int(scene.integer("size_classes", 1, 1000, spec.sizeClasses));
+    spec.seed = std::uint64_t(scene.integer("seed", 0, std::int64_t(1) << 53, 1));
+    spec.friction = scene.number("friction", closed(0, 10), spec.friction);
+    spec.compactionRate = scene.number("compaction_rate", openClosed(0, 1e3), spec.compactionRate);
+    const JsonSection gas = scene.child("gas", {"gap", "speed"}, false);
+    spec.gasGap = gas.number("gap", closed(0, 100), spec.gasGap);
+    spec.gasSpeed = gas.number("speed", openClosed(0, 1e3), spec.gasSpeed);
+    const JsonSection shear = scene.child("shear", {"strain_rate", "pre_strain"}, false);
+    spec.shearStrainRate = shear.number("strain_rate", openClosed(0, 1e3), spec.shearStrainRate);
+    spec.shearPreStrain = shear.number("pre_strain", closed(0, 0.5), spec.shearPreStrain);
+
+    const JsonSection probe =
+        top.child("probe", {"steps", "precision", "bracket", "accuracy_fractions"}, false);
+    spec.steps = probe.integer("steps", 100, 10000000, spec.steps);
+    spec.precision = probe.number("precision", Range{1e-6, 0.5, true, true}, spec.precision);
+    if (const auto b = probe.numbers("bracket", open(0, 1e3))) {
+        if (b->size() != 2 || !((*b)[0] < (*b)[1])) {
+            probe.refuse("bracket", probe.at("bracket"),
+                         "two numbers [low, high] with 0 < low < high < 1000 (in units of "
+                         "sqrt(m_min / k_n))");
+        }
+        spec.lowBound = (*b)[0];
+        spec.highBound = (*b)[1];
+    }
+    if (const auto f = probe.numbers("accuracy_fractions", open(0, 1))) {
+        spec.accuracyFractions = *f;
+    }
+
+    const JsonSection axes =
+        top.child("axes", {"aspect_ratio", "stiffness_ratio", "damping", "packing"}, true,
+                  "an object with aspect_ratio, stiffness_ratio, damping and packing");
+    const auto required = [&](const std::string& key, Range range) {
+        const auto v = axes.numbers(key, range);
+        if (!v) {
+            axes.missing(key, "a non-empty array of numbers " + range.text());
+        }
+        return *v;
+    };
+    spec.aspectRatios = required("aspect_ratio", Range{0.2, 1.0, true, true});
+    spec.stiffnessRatios = required("stiffness_ratio", Range{0.01, 100, true, true});
+    spec.dampings.clear();
+    for (std::size_t i = 0, n = arrayLength(axes, "damping", "damping objects"); i < n; ++i) {
+        spec.dampings.push_back(
+            readDamping(element(file, axes, "damping", i, {"kind", "coefficient"})));
+    }
+    spec.packings.clear();
+    for (std::size_t i = 0, n = arrayLength(axes, "packing", "packing objects"); i < n; ++i) {
+        spec.packings.push_back(
+            readPacking(element(file, axes, "packing", i, {"state", "pressure"})));
+    }
+    return spec;
+}
+
+std::string dampingLabel(const DampingParameters& d) {
+    if (d.kind == DampingKind::None) {
+        return "none";
+    }
+    return fmt::format("{} {}", dampingName(d.kind), shortNumber(d.coefficient));
+}
+
+std::string packingLabel(const PackingState& p) {
+    if (p.kind == PackingKind::Gas) {
+        return "gas";
+    }
+    return fmt::format("{} {} kPa", packingName(p.kind), shortNumber(p.pressure / 1e3));
+}
+
+std::vector<StabilityCell> stabilityCells(const StabilityMapSpec& spec) {
+    std::vector<StabilityCell> out;
+    for (double eta : spec.aspectRatios) {
+        for (double kt : spec.stiffnessRatios) {
+            for (const DampingParameters& d : spec.dampings) {
+                for (const PackingState& p : spec.packings) {
+                    StabilityCell c{{}, eta, kt, d, p};
+                    std::string damping = d.kind == DampingKind::None
+                                              ? "none"
+                                              : dampingName(d.kind) + shortNumber(d.coefficient);
+                    std::string packing =
+                        p.kind == PackingKind::Gas
+                            ? "gas"
+                            : packingName(p.kind) + shortNumber(p.pressure / 1e3) + "kPa";
+                    c.id = fmt::format("eta{}_kt{}_{}_{}", shortNumber(eta), shortNumber(kt),
+                                       damping, packing);
+                    out.push_back(std::move(c));
+                }
+            }
+        }
+    }
+    return out;
+}
+
+std::string cellResultJson(const StabilityCellResult& r) {
+    Json j;
+    j["cell"] = r.cell.id;
+    j["aspect_ratio"] = r.cell.aspectRatio;
+    j["stiffness_ratio"] = r.cell.stiffnessRatio;
+    j["damping"] = dampingName(r.cell.damping.kind);
+    j["damping_coefficient"] = r.cell.damping.coefficient;
+    j["packing"] = packingName(r.cell.packing.kind);
+    j["pressure"] = r.cell.packing.pressure;
+    j["time_unit"] = r.timeUnit;
+    j["bracketed"] = r.limit.bracketed;
+    j["limit"] = r.limit.limit;
+    j["limit_low"] = r.limit.low;
+    j["limit_high"] = r.limit.high;
+    j["detector"] = blowUpName(r.limit.detector);
+    j["detector_step"] = r.limit.detectorStep;
+    j["detector_detail"] = r.limit.detail;
+    j["probes"] = r.limit.probes;
+    j["estimate"] = r.estimate;
+    j["estimate_translational"] = r.estimateTranslational;
+    j["estimate_rotational"] = r.estimateRotational;
+    j["compaction_calm"] = r.compactionCalm;
+    j["seconds"] = r.seconds;
+    j["accuracy"] = Json::array();
+    for (const AccuracyPoint& a : r.accuracy) {
+        j["accuracy"].push_back({{"fraction", a.fraction},
+                                 {"step", a.step},
+                                 {"stable", a.stable},
+                                 {"max_residual", a.maxResidual},
+                                 {"final_residual", a.finalResidual}});
+    }
+    return j.dump(2) + "\n";
+}
+
+StabilityCellResult parseCellResult(const std::string& text, const std::string& sourceName) {
+    try {
+        const Json j = Json::parse(text);
+        StabilityCellResult r;
+        r.cell.id = j.at("cell").get<std::string>();
+        r.cell.aspectRatio = j.at("aspect_ratio").get<double>();
+        r.cell.stiffnessRatio = j.at("stiffness_ratio").get<double>();
+        const std::string damping = j.at("damping").get<std::string>();
+        r.cell.damping.kind = damping == "none"      ? DampingKind::None
+                              : damping == "viscous" ? DampingKind::GlobalViscous
+                                                     : DampingKind::CundallLocal;
+        r.cell.damping.coefficient = j.at("damping_coefficient").get<double>();
+        const std::string packing = j.at("packing").get<std::string>();
+        r.cell.packing.kind = packing == "gas"     ? PackingKind::Gas
+                              : packing == "dense" ? PackingKind::Dense
+                                                   : PackingKind::Shear;
+        r.cell.packing.pressure = j.at("pressure").get<double>();
+        r.timeUnit = j.at("time_unit").get<double>();
+        r.limit.bracketed = j.at("bracketed").get<bool>();
+        r.limit.limit = j.at("limit").get<double>();
+        r.limit.low = j.at("limit_low").get<double>();
+        r.limit.high = j.at("limit_high").get<double>();
+        const std::string detector = j.at("detector").get<std::string>();
+        for (BlowUp b : {BlowUp::None, BlowUp::NonFinite, BlowUp::Displacement, BlowUp::Overlap,
+                         BlowUp::KineticEnergy, BlowUp::EnergyResidual, BlowUp::UnbalancedFloor,
+                         BlowUp::EngineStop}) {
+            if (blowUpName(b) == detector) {
+                r.limit.detector = b;
+            }
+        }
+        r.limit.detectorStep = j.at("detector_step").get<std::int64_t>();
+        r.limit.detail = j.at("detector_detail").get<std::string>();
+        r.limit.probes = j.at("probes").get<int>();
+        r.estimate = j.at("estimate").get<double>();
+        r.estimateTranslational = j.at("estimate_translational").get<double>();
+        r.estimateRotational = j.at("estimate_rotational").get<double>();
+        r.compactionCalm = j.at("compaction_calm").get<bool>();
+        r.seconds = j.at("seconds").get<double>();
+        for (const Json& a : j.at("accuracy")) {
+            r.accuracy.push_back({a.at("fraction").get<double>(), a.at("step").get<double>(),
+                                  a.at("stable").get<bool>(), a.at("max_residual").get<double>(),
+                                  a.at("final_residual").get<double>()});
+        }
+        return r;
+    } catch (const Json::exception& e) {
+        throw std::runtime_error(
+            fmt::format("{}: not a stability cell result: {}", sourceName, e.what()));
+    }
+}
+
+std::string limitsCsv(const std::vector<StabilityCellResult>& results) {
+    std::string s = kAxesHeader;
+    s += ",limit [sqrt(m_min/k_n)],limit_low [sqrt(m_min/k_n)],limit_high [sqrt(m_min/k_n)],"
+         "bracketed,estimate [sqrt(m_min/k_n)],estimate_translational [sqrt(m_min/k_n)],"
+         "estimate_rotational [sqrt(m_min/k_n)],limit_over_estimate [-],limit [s],"
+         "time_unit [s],detector,detector_step [-],probes [-],compaction_calm,cell_seconds [s]\n";
+    for (const StabilityCellResult& r : results) {
+        s += axesFields(r.cell);
+        s += fmt::format(",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", number(r.limit.limit),
+                         number(r.limit.low), number(r.limit.high),
+                         r.limit.bracketed ? "yes" : "no", number(r.estimate),
+                         number(r.estimateTranslational), number(r.estimateRotational),
+                         number(r.estimate > 0 ? r.limit.limit / r.estimate : NAN),
+                         number(r.limit.limit * r.timeUnit), number(r.timeUnit),
+                         blowUpName(r.limit.detector), r.limit.detectorStep, r.limit.probes,
+                         r.compactionCalm ? "yes" : "no", number(r.seconds));
+    }
+    return s;
+}
+
+std::string accuracyCsv(const std::vector<StabilityCellResult>& results) {
+    std::string s = kAxesHeader;
+    s += ",fraction_of_limit [-],step [sqrt(m_min/k_n)],stable,max_residual [-],"
+         "final_residual [-]\n";
+    for (const StabilityCellResult& r : results) {
+        for (const AccuracyPoint& a : r.accuracy) {
+            s += axesFields(r.cell);
+            s += fmt::format(",{},{},{},{},{}\n", number(a.fraction), number(a.step),
+                             a.stable ? "yes" : "no", number(a.maxResidual),
+                             number(a.finalResidual));
+        }
+    }
+    return s;
+}
+
+} // namespace grainlab

@@ -1,0 +1,178 @@
+// See stability_figures.h.
+#include "grainlab/ui/stability_figures.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QDir>
+#include <QObject>
+#include <QPainter>
+
+#include "grainlab/ui/figure_export.h"
+
+namespace grainlab::ui {
+namespace {
+
+/// The labels of an axis's values, and which value a result has on it.
+QStringList labelsOf(const StabilityMapSpec& spec, StabilityAxis axis) {
+    QStringList out;
+    switch (axis) {
+    case StabilityAxis::AspectRatio:
+        for (double v : spec.aspectRatios) {
+            out << QString::number(v, 'g', 4);
+        }
+        break;
+    case StabilityAxis::StiffnessRatio:
+        for (double v : spec.stiffnessRatios) {
+            out << QString::number(v, 'g', 4);
+        }
+        break;
+    case StabilityAxis::Damping:
+        for (const DampingParameters& d : spec.dampings) {
+            out << QString::fromStdString(dampingLabel(d));
+        }
+        break;
+    case StabilityAxis::Packing:
+        for (const PackingState& p : spec.packings) {
+            out << QString::fromStdString(packingLabel(p));
+        }
+        break;
+    }
+    return out;
+}
+
+int indexOn(const StabilityMapSpec& spec, StabilityAxis axis, const StabilityCell& c) {
+    const auto find = [](const auto& list, const auto& same) {
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            if (same(list[i])) {
+                return int(i);
+            }
+        }
+        return -1;
+    };
+    switch (axis) {
+    case StabilityAxis::AspectRatio:
+        return find(spec.aspectRatios, [&](double v) { return v == c.aspectRatio; });
+    case StabilityAxis::StiffnessRatio:
+        return find(spec.stiffnessRatios, [&](double v) { return v == c.stiffnessRatio; });
+    case StabilityAxis::Damping:
+        return find(spec.dampings, [&](const DampingParameters& d) {
+            return d.kind == c.damping.kind && d.coefficient == c.damping.coefficient;
+        });
+    case StabilityAxis::Packing:
+        return find(spec.packings, [&](const PackingState& p) {
+            return p.kind == c.packing.kind && p.pressure == c.packing.pressure;
+        });
+    }
+    return -1;
+}
+
+QString axisTitle(StabilityAxis axis) {
+    switch (axis) {
+    case StabilityAxis::AspectRatio:
+        return QObject::tr("aspect ratio η = H/W");
+    case StabilityAxis::StiffnessRatio:
+        return QObject::tr("stiffness ratio k_t / k_n");
+    case StabilityAxis::Damping:
+        return QObject::tr("damping");
+    case StabilityAxis::Packing:
+        return QObject::tr("packing state");
+    }
+    return {};
+}
+
+} // namespace
+
+QString stabilityAxisName(StabilityAxis axis) {
+    switch (axis) {
+    case StabilityAxis::AspectRatio:
+        return "aspect_ratio";
+    case StabilityAxis::StiffnessRatio:
+        return "stiffness_ratio";
+    case StabilityAxis::Damping:
+        return "damping";
+    case StabilityAxis::Packing:
+        return "packing";
+    }
+    return {};
+}
+
+HeatMapPainter stabilityHeatMap(const StabilityMapSpec& spec,
+                                const std::vector<StabilityCellResult>& results, StabilityAxis x,
+                                StabilityAxis y, StabilityValue value) {
+    HeatMapPainter map;
+    map.xLabels = labelsOf(spec, x);
+    map.yLabels = labelsOf(spec, y);
+    map.xTitle = axisTitle(x);
+    map.yTitle = axisTitle(y);
+    const bool limit = value == StabilityValue::Limit;
+    map.title = limit ? QObject::tr("Largest stable Δt (smallest over the other axes); below: the "
+                                    "engine's estimate")
+                      : QObject::tr("Measured limit / the engine's estimate (smallest over the "
+                                    "other axes)");
+    map.valueTitle = limit ? QObject::tr("Δt limit [√(m_min/k_n)]") : QObject::tr("ratio [-]");
+    const std::size_t n = std::size_t(map.xLabels.size()) * std::size_t(map.yLabels.size());
+    map.values.assign(n, std::nullopt);
+    std::vector<std::optional<double>> estimate(n);
+    for (const StabilityCellResult& r : results) {
+        const int ix = indexOn(spec, x, r.cell), iy = indexOn(spec, y, r.cell);
+        if (ix < 0 || iy < 0 || !(r.estimate > 0)) {
+            continue;
+        }
+        const std::size_t i = std::size_t(iy) * std::size_t(map.xLabels.size()) + std::size_t(ix);
+        const double v = limit ? r.limit.limit : r.limit.limit / r.estimate;
+        map.values[i] = map.values[i] ? std::min(*map.values[i], v) : v;
+        estimate[i] = estimate[i] ? std::min(*estimate[i], r.estimate) : r.estimate;
+    }
+    if (limit) {
+        map.notes.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            if (estimate[i]) {
+                map.notes[i] = QObject::tr("est. %1").arg(QString::number(*estimate[i], 'g', 3));
+            }
+        }
+    }
+    return map;
+}
+
+QStringList writeStabilityFigures(const QString& folder, const StabilityMapSpec& spec,
+                                  const std::vector<StabilityCellResult>& results, QString* error,
+                                  const QStringList& formats, QSize size) {
+    QStringList written;
+    if (!QDir().mkpath(folder)) {
+        if (error) {
+            *error = QObject::tr("%1: cannot create the folder").arg(folder);
+        }
+        return written;
+    }
+    const StabilityAxis axes[] = {StabilityAxis::AspectRatio, StabilityAxis::StiffnessRatio,
+                                  StabilityAxis::Damping, StabilityAxis::Packing};
+    for (int a = 0; a < 4; ++a) {
+        for (int b = a + 1; b < 4; ++b) {
+            if (labelsOf(spec, axes[a]).size() < 2 && labelsOf(spec, axes[b]).size() < 2) {
+                continue;
+            }
+            for (StabilityValue value :
+                 {StabilityValue::Limit, StabilityValue::LimitOverEstimate}) {
+                const HeatMapPainter map = stabilityHeatMap(spec, results, axes[a], axes[b], value);
+                const QString name =
+                    QString("%1_%2_%3")
+                        .arg(value == StabilityValue::Limit ? "limit" : "ratio",
+                             stabilityAxisName(axes[a]), stabilityAxisName(axes[b]));
+                for (const QString& format : formats) {
+                    const QString path = QDir(folder).filePath(name + "." + format);
+                    if (!exportFigure(
+                            path, size,
+                            [&](QPainter& p, QSize s) { map.paint(p, QRectF(QPointF(0, 0), s)); },
+                            error)) {
+                        return written;
+                    }
+                    written << path;
+                }
+            }
+        }
+    }
+    return written;
+}
+
+} // namespace grainlab::ui
