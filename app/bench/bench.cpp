@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "bench/lammps_peer.h"
+#include "bench/limit_kernel.h"
 #include "cli/progress_bar.h"
 #include "grainlab/assembly.h"
 #include "grainlab/measures.h"
@@ -125,6 +126,25 @@ RunResult timeEngine(const SimulationState& dense, int threads, std::int64_t ste
     return r;
 }
 
+/// The minimal disk kernel on the same work as timeEngine, but with axis 2 held (no servo).
+RunResult timeLimit(const SimulationState& dense, int threads, std::int64_t steps) {
+    SimulationState state = dense;
+    state.parameters.friction = 0.5;
+    LimitKernel kernel(state, kAxialStrainRate, threads);
+    const std::int64_t rebuildsBefore = kernel.rebuilds();
+    const auto start = std::chrono::steady_clock::now();
+    kernel.advance(steps);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    RunResult r;
+    const double n = double(kernel.grainCount());
+    r.grainStepsPerSecond = n * double(steps) / seconds;
+    r.contactsPerGrain = 2.0 * double(kernel.contactCount()) / n;
+    r.pairsPerGrain = double(kernel.pairCount()) / n;
+    r.rebuilds = kernel.rebuilds() - rebuildsBefore + 1; // as the engine counts: the first build
+    return r;
+}
+
 double median(std::vector<double> values) {
     if (values.empty()) {
         return std::nan("");
@@ -220,6 +240,10 @@ void addBenchOptions(CLI::App& command, BenchOptions& o) {
         ->capture_default_str();
     command.add_flag("--vs-lammps", o.versusLammps,
                      "run stock LAMMPS (lmp, in.bench) in every round and print the ratios");
+    command.add_flag(
+        "--limit", o.limit,
+        "run the minimal disk kernel (the engine's disk physics without servo, "
+        "recording or checks) beside the engine's disk rows and print engine / kernel");
     command.add_option("--lammps-dir", o.lammpsDirectory, "folder with in.bench and dense.data")
         ->capture_default_str();
     command.add_option("--lammps", o.lammpsExecutable, "LAMMPS executable")->capture_default_str();
@@ -276,6 +300,12 @@ int runBench(const BenchOptions& o, WindowBench windowBench) {
         return 2;
     }
 
+    if (o.limit && o.shape == "oval") {
+        fmt::print(stderr,
+                   "bench: --limit: the minimal kernel runs disks: use --shape disk or both\n");
+        return 2;
+    }
+
     // The dense assemblies, prepared once.
     std::vector<std::pair<std::string, SimulationState>> assemblies;
     for (const auto& [name, aspect] : shapes) {
@@ -291,38 +321,55 @@ int runBench(const BenchOptions& o, WindowBench windowBench) {
         }
     }
 
-    // Rows in the order they run within a round: ours 1 thread, LAMMPS, ours 2 threads, ...
+    // Rows in the order they run within a round: ours 1 thread, the limit kernel 1 thread,
+    // LAMMPS, ours 2 threads, the limit kernel 2 threads, ...
+    enum class Runner { Engine, Lammps, Limit };
+    struct Planned {
+        std::size_t assembly;
+        int threads;
+        Runner runner;
+    };
     std::vector<Series> series;
-    std::vector<std::pair<std::size_t, int>> plan; // (assembly, threads); threads 0 = LAMMPS
+    std::vector<Planned> plan;
     for (std::size_t a = 0; a < assemblies.size(); ++a) {
         for (std::size_t t = 0; t < threadCounts.size(); ++t) {
-            plan.emplace_back(a, threadCounts[t]);
+            plan.push_back({a, threadCounts[t], Runner::Engine});
+            if (o.limit && assemblies[a].first == "disk") {
+                plan.push_back({a, threadCounts[t], Runner::Limit});
+            }
             if (a == 0 && t == 0 && o.versusLammps) {
-                plan.emplace_back(a, 0);
+                plan.push_back({a, 1, Runner::Lammps});
             }
         }
     }
-    for (const auto& [a, threads] : plan) {
+    for (const Planned& k : plan) {
         Series s;
-        s.shape = assemblies[a].first;
-        s.threads = threads;
-        s.grains = assemblies[a].second.grains.size();
-        s.name = threads == 0 ? "LAMMPS" : "GrainLab";
-        if (threads == 0) {
-            s.shape = "disk";
-            s.threads = 1;
-        }
+        s.shape = k.runner == Runner::Lammps ? "disk" : assemblies[k.assembly].first;
+        s.threads = k.threads;
+        s.grains = assemblies[k.assembly].second.grains.size();
+        s.name = k.runner == Runner::Lammps  ? "LAMMPS"
+                 : k.runner == Runner::Limit ? "limit"
+                                             : "GrainLab";
         series.push_back(s);
     }
     std::vector<int> identical(assemblies.size(), 1);
     for (int round = 0; round < o.rounds; ++round) {
         std::vector<SimulationState> firstFinal(assemblies.size());
         for (std::size_t k = 0; k < plan.size(); ++k) {
-            const auto& [a, threads] = plan[k];
+            const std::size_t a = plan[k].assembly;
+            const int threads = plan[k].threads;
             Series& s = series[k];
             fmt::print(stderr, "round {}/{}: {} {} {} thread(s), {} steps\n", round + 1, o.rounds,
                        s.name, s.shape, s.threads, o.steps);
-            if (threads == 0) {
+            if (plan[k].runner == Runner::Limit) {
+                const RunResult r = timeLimit(assemblies[a].second, threads, o.steps);
+                s.rate.push_back(r.grainStepsPerSecond);
+                s.contacts.push_back(r.contactsPerGrain);
+                s.rebuilds = r.rebuilds;
+                s.pairsPerGrain = r.pairsPerGrain;
+                continue;
+            }
+            if (plan[k].runner == Runner::Lammps) {
                 const LammpsResult r = runLammps(o.lammpsDirectory, o.lammpsExecutable, o.steps);
                 s.rate.push_back(r.grainStepsPerSecond);
                 s.contacts.push_back(r.contactsPerGrain);
@@ -378,6 +425,20 @@ int runBench(const BenchOptions& o, WindowBench windowBench) {
         if (s.threads != threadCounts.front()) {
             if (const Series* one = find("GrainLab", s.shape, threadCounts.front())) {
                 fmt::print("  {} {} threads / {} thread(s): {:.2f}x\n", s.shape, s.threads,
+                           threadCounts.front(), medianRatio(s, *one));
+            }
+        }
+        if (const Series* limit = find("limit", s.shape, s.threads)) {
+            fmt::print("  {} {} thread(s) / limit kernel {} thread(s): {:.2f} (the engine at "
+                       "{:.0f} % of the minimal kernel's speed)\n",
+                       s.shape, s.threads, s.threads, medianRatio(s, *limit),
+                       100.0 * medianRatio(s, *limit));
+        }
+    }
+    for (const Series& s : series) {
+        if (s.name == "limit" && s.threads != threadCounts.front()) {
+            if (const Series* one = find("limit", s.shape, threadCounts.front())) {
+                fmt::print("  limit kernel {} threads / {} thread(s): {:.2f}x\n", s.threads,
                            threadCounts.front(), medianRatio(s, *one));
             }
         }

@@ -2,7 +2,8 @@
 // `grainlab bench`: times the engine on a dense periodic assembly under biaxial compression
 // (axis 1 strain-controlled at an engineering rate of 0.2 /s, axis 2 held at 100 kPa, mu = 0.5)
 // and prints grain-steps per second; optionally runs stock LAMMPS on the same disk assembly in
-// the same invocation (interleaved rounds), and the cost per grain-step from 1k to 128k grains.
+// the same invocation (interleaved rounds), the minimal disk kernel of limit_kernel.h beside the
+// engine (--limit), and the cost per grain-step from 1k to 128k grains.
 // Progress goes to stderr, the tables to stdout. Runs on the main thread. With --gui (GUI builds):
 // what the live window costs the engine and the scene's frame time instead (window_bench.h).
 
@@ -28,6 +29,9 @@ struct BenchOptions {
     /// "generated" compacts a grid assembly with the engine (as for ovals).
     std::string assembly = "lammps";
     bool versusLammps = false; ///< also run stock LAMMPS (in.bench) in every round
+    /// Also run the minimal disk kernel (limit_kernel.h) beside the engine's disk rows, at each
+    /// thread count, in every round.
+    bool limit = false;
     std::string lammpsDirectory = std::string(GRAINLAB_SOURCE_DIR) + "/resources/bench/lammps";
     std::string lammpsExecutable = "lmp";
     bool scaling = false; ///< cost per grain-step at 1k, 8k, 32k, 128k grains instead

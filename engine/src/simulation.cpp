@@ -90,6 +90,36 @@ inline PairResponse respond(const ContactGeometry& c, bool touching, double l1, 
     return r;
 }
 
+/// The per-grain arc tables and orientations the pair loop reads.
+struct ArcTables {
+    const double *endOffset, *sideOffset, *endRadius, *sideRadius, *cosJ, *sinJ, *cosT, *sinT;
+};
+
+/// Oval pair geometry as the pair loop decides it, from the same per-grain numbers: the facing-pair
+/// kernel; where it cannot decide, the quadrant kernel; where that asks, the 16-pair reference
+/// (always with `allArcPairs`). Scalar: for the pairs the vector loop hands on, and the network.
+ContactGeometry decideOvalPair(const ArcTables& t, const OvalShape& A, const OvalShape& B,
+                               std::int32_t i, std::int32_t j, double l1, double l2,
+                               double smallerWidth, bool allArcPairs) {
+    if (!allArcPairs) {
+        const FacingPairContact f = ovalContactFacingPair(
+            t.endOffset[i], t.sideOffset[i], t.endRadius[i], t.sideRadius[i], t.cosJ[i], t.sinJ[i],
+            t.cosT[i], t.sinT[i], t.endOffset[j], t.sideOffset[j], t.endRadius[j], t.sideRadius[j],
+            t.cosJ[j], t.sinJ[j], t.cosT[j], t.sinT[j], l1, l2, smallerWidth);
+        if (!f.undecided) {
+            return f.geometry;
+        }
+        const QuadrantContact q = ovalContactQuadrant(
+            t.endOffset[i], t.sideOffset[i], t.endRadius[i], t.sideRadius[i], t.cosJ[i], t.sinJ[i],
+            t.cosT[i], t.sinT[i], t.endOffset[j], t.sideOffset[j], t.endRadius[j], t.sideRadius[j],
+            t.cosJ[j], t.sinJ[j], t.cosT[j], t.sinT[j], l1, l2, smallerWidth);
+        if (!q.needsReference) {
+            return q.geometry;
+        }
+    }
+    return ovalContactAllPairs(A, t.cosT[i], t.sinT[i], B, t.cosT[j], t.sinT[j], l1, l2);
+}
+
 } // namespace
 
 SimulationError::SimulationError(std::int64_t step_, std::int32_t grain_, std::string cause_)
@@ -227,11 +257,11 @@ ContactGeometry Simulation::pairGeometry(std::size_t p, double l1, double l2) co
     }
     const OvalShape& A = s_.shapes[s_.grains.shape[i]];
     const OvalShape& B = s_.shapes[s_.grains.shape[j]];
-    if (s_.parameters.allArcPairs) {
-        return ovalContactAllPairs(A, cosTheta_[i], sinTheta_[i], B, cosTheta_[j], sinTheta_[j], l1,
-                                   l2);
-    }
-    return ovalContact(A, cosTheta_[i], sinTheta_[i], B, cosTheta_[j], sinTheta_[j], l1, l2);
+    const ArcTables tables{endOffset_.data(),  sideOffset_.data(),  endRadius_.data(),
+                           sideRadius_.data(), cosJunction_.data(), sinJunction_.data(),
+                           cosTheta_.data(),   sinTheta_.data()};
+    return decideOvalPair(tables, A, B, i, j, l1, l2, pairSmallerWidth_[p],
+                          s_.parameters.allArcPairs);
 }
 
 template <bool Disk, bool Frictional, bool Increment>
@@ -292,7 +322,8 @@ void Simulation::pairForces() {
         double s11 = 0, s12 = 0, s21 = 0, s22 = 0, e1 = 0, e2 = 0, slip = 0;
         double excess = -std::numeric_limits<double>::infinity();
         double deferred = 0; // a double: GCC 12 vectorises no loop mixing int and double sums
-        // Pairs the quadrant kernel hands to the 16-pair reference (ovals; rare).
+        // Pairs the facing-pair kernel cannot decide (ovals; rare): decided after the loop by
+        // the quadrant kernel or the 16-pair reference.
         // Flags as doubles, copied to bytes after the loop: a byte store in the simd loop makes
         // GCC 12 choose 32 lanes per iteration (the narrowest type sets the vectorisation
         // factor), and the kernel then spills (1.3x slower for ovals).
@@ -307,18 +338,18 @@ void Simulation::pairForces() {
             const double d2 = l1 * l1 + l2 * l2, reach2 = reach * reach;
             const bool near = (d2 < reach2) & (d2 > 0.0);
             // No aggregate is copied in this loop: GCC 12 vectorises none that does.
-            const QuadrantContact q = [&] {
+            const FacingPairContact q = [&] {
                 if constexpr (Disk) {
-                    return QuadrantContact{diskContact(halfWidth[i], reach, l1, l2), false};
+                    return FacingPairContact{diskContact(halfWidth[i], reach, l1, l2), false};
                 } else {
-                    return ovalContactQuadrant(
+                    return ovalContactFacingPair(
                         endOffset[i], sideOffset[i], endRadius[i], sideRadius[i], cosJ[i], sinJ[i],
                         cosT[i], sinT[i], endOffset[j], sideOffset[j], endRadius[j], sideRadius[j],
                         cosJ[j], sinJ[j], cosT[j], sinT[j], l1, l2, smaller);
                 }
             }();
             const ContactGeometry& c = q.geometry;
-            const bool reference = !Disk & near & (q.needsReference | fullOvalTest);
+            const bool reference = !Disk & near & (q.undecided | fullOvalTest);
             const bool touching = near & !reference & (c.overlap > 0.0);
             const double old = stored[p];
             // Loaded here, not by the kinematics lambda: loads through its captures would sit
@@ -361,8 +392,10 @@ void Simulation::pairForces() {
                 const double l2 = x2[j] + h1 * k1 + h3 * k2 - x2[i];
                 const OvalShape& A = s_.shapes[s_.grains.shape[i]];
                 const OvalShape& B = s_.shapes[s_.grains.shape[j]];
+                const ArcTables tables{endOffset, sideOffset, endRadius, sideRadius,
+                                       cosJ,      sinJ,       cosT,      sinT};
                 ContactGeometry c =
-                    ovalContactAllPairs(A, cosT[i], sinT[i], B, cosT[j], sinT[j], l1, l2);
+                    decideOvalPair(tables, A, B, i, j, l1, l2, pairSmallerWidth[p], fullOvalTest);
                 const bool touching = c.overlap > 0.0;
                 if (!touching) {
                     c = ContactGeometry{0.0, 1.0, 0.0, 0.0, 0.0}; // finite numbers for the law
