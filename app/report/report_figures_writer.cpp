@@ -150,15 +150,7 @@ bool writeVoidCellPictures(const QString& folder, const std::vector<ReportFigure
 std::string writeReportFiguresHeadless(const std::string& folder,
                                        const std::vector<ReportFigure>& figures,
                                        const std::vector<ReportSource>& sources) {
-    std::unique_ptr<QGuiApplication> app;
-    if (!QCoreApplication::instance()) {
-        // Figures need fonts, not a screen: the offscreen platform works everywhere.
-        qputenv("QT_QPA_PLATFORM", "offscreen");
-        static int argc = 1;
-        static char name[] = "grainlab";
-        static char* argv[] = {name, nullptr};
-        app = std::make_unique<QGuiApplication>(argc, argv);
-    }
+    const auto app = ui::headlessApplicationIfNone();
     QString error;
     const QString dir = q(folder);
     if (!QDir().mkpath(dir)) {

@@ -5,21 +5,15 @@
 
 #include <QGuiApplication>
 
+#include "grainlab/ui/figure_export.h"
+
 #include "grainlab/ui/stability_figures.h"
 
 namespace grainlab {
 
 std::string writeStabilityFiguresHeadless(const std::string& folder, const StabilityMapSpec& spec,
                                           const std::vector<StabilityCellResult>& results) {
-    std::unique_ptr<QGuiApplication> app;
-    if (!QCoreApplication::instance()) {
-        // Figures need fonts, not a screen: the offscreen platform works everywhere.
-        qputenv("QT_QPA_PLATFORM", "offscreen");
-        static int argc = 1;
-        static char name[] = "grainlab";
-        static char* argv[] = {name, nullptr};
-        app = std::make_unique<QGuiApplication>(argc, argv);
-    }
+    const auto app = ui::headlessApplicationIfNone();
     QString error;
     const QString figures =
         QString::fromStdString((std::filesystem::path(folder) / "figures").string());

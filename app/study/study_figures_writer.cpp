@@ -5,6 +5,8 @@
 
 #include <QGuiApplication>
 
+#include "grainlab/ui/figure_export.h"
+
 #include "grainlab/ui/study_figures.h"
 
 namespace grainlab {
@@ -12,15 +14,7 @@ namespace grainlab {
 std::string writeStudyFiguresHeadless(const std::string& studyFolder, const StudySpec& spec,
                                       const StudyPlan& plan, const std::vector<RunResult>& results,
                                       const StudySummary& summary) {
-    std::unique_ptr<QGuiApplication> app;
-    if (!QCoreApplication::instance()) {
-        // Figures need fonts, not a screen: the offscreen platform works everywhere.
-        qputenv("QT_QPA_PLATFORM", "offscreen");
-        static int argc = 1;
-        static char name[] = "grainlab";
-        static char* argv[] = {name, nullptr};
-        app = std::make_unique<QGuiApplication>(argc, argv);
-    }
+    const auto app = ui::headlessApplicationIfNone();
     QString error;
     const QString folder =
         QString::fromStdString((std::filesystem::path(studyFolder) / "figures").string());

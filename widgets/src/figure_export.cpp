@@ -1,6 +1,8 @@
 // See figure_export.h.
 #include "grainlab/ui/figure_export.h"
 
+#include <QGuiApplication>
+
 #include <QDir>
 #include <QFileInfo>
 #include <QImage>
@@ -14,6 +16,17 @@
 #include "grainlab/ui/scene_view.h"
 
 namespace grainlab::ui {
+
+std::unique_ptr<QGuiApplication> headlessApplicationIfNone() {
+    if (QCoreApplication::instance()) {
+        return nullptr;
+    }
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    static int argc = 1;
+    static char name[] = "grainlab";
+    static char* argv[] = {name, nullptr};
+    return std::make_unique<QGuiApplication>(argc, argv);
+}
 namespace {
 
 bool fail(QString* error, const QString& message) {

@@ -4,6 +4,7 @@
 // series as CSV) into a folder. GUI thread (it paints widgets' content).
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include <QSize>
@@ -12,12 +13,18 @@
 
 #include "grainlab/series.h"
 
+class QGuiApplication;
 class QPainter;
 
 namespace grainlab::ui {
 
 class ChartsPanel;
 class SceneView;
+
+/// For headless commands that write figures (study, report, stability): a Qt application on
+/// the offscreen platform when none runs yet (figures need fonts, not a screen), else null. Keep
+/// it alive while painting. Main thread.
+std::unique_ptr<QGuiApplication> headlessApplicationIfNone();
 
 /// Paints `paint(painter, size)` into `path`: .png (white background), .svg or .pdf, at `size`
 /// pixels (points for PDF). Returns false and sets `error` on an unknown extension or a write
