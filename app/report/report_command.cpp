@@ -210,9 +210,9 @@ std::string headlineCsv(const std::vector<HeadlineRow>& rows, const PooledFitSca
         }
     }
     line("pooled_fit_slope", "slope of Z̄ on N_v/N_vi, every test pooled", "pooled", 0, "-",
-         pooled.slope, PublishedValue{kPublishedFitSlope, false, "3.45"});
+         pooled.slope, publishedFitSlope());
     line("pooled_fit_intercept", "intercept of Z̄ on N_v/N_vi, every test pooled", "pooled", 0,
-         "-", pooled.intercept, PublishedValue{kPublishedFitIntercept, false, "2.1"});
+         "-", pooled.intercept, publishedFitIntercept());
     line("pooled_fit_r2", "R² of that fit", "pooled", 0, "-", pooled.r2, std::nullopt);
     return out;
 }

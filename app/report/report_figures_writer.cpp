@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/atomic_file.h"
 #include "grainlab/run_file.h"
 #include "grainlab/shear_metrics.h"
 #include "grainlab/ui/colour_maps.h"
@@ -133,14 +134,8 @@ bool writeVoidCellPictures(const QString& folder, const std::vector<ReportFigure
             csv += fmt::format("{},{:.9g},{:.9g},{:.9g}\n", c.valence, c.area, c.centroid1,
                                c.centroid2);
         }
-        std::FILE* out = std::fopen(QDir(folder).filePath(q(stem) + ".csv").toStdString().c_str(),
-                                    "w");
-        if (!out || std::fputs(csv.c_str(), out) < 0 || std::fclose(out) != 0) {
-            if (error) {
-                *error = QObject::tr("%1: cannot write").arg(q(stem) + ".csv");
-            }
-            return false;
-        }
+        // Throws naming the file; the caller reports it.
+        writeFileAtomically(QDir(folder).filePath(q(stem) + ".csv").toStdString(), csv);
     }
     return true;
 }

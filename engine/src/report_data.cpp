@@ -91,12 +91,18 @@ std::vector<int> onGrid(const CurveBand& band, const std::vector<double>& grid) 
     return at;
 }
 
-/// A line of mean ± sd at the grid points that at least one run reaches.
-ReportLine bandLine(const CurveBand& band, const TestKey& key) {
+/// An empty line of test `key`, labelled with its pressure.
+ReportLine lineOf(const TestKey& key) {
     ReportLine line;
     line.label = pressureLabel(key.pressure);
     line.test = key.test;
     line.pressure = key.pressure;
+    return line;
+}
+
+/// A line of mean ± sd at the grid points that at least one run reaches.
+ReportLine bandLine(const CurveBand& band, const TestKey& key) {
+    ReportLine line = lineOf(key);
     line.x = band.x;
     line.y = band.mean;
     line.sd = band.sd;
@@ -119,10 +125,7 @@ ReportLine parametricLine(const std::vector<ReportRun>& runs, const TestKey& key
     const std::vector<double> grid = gridOf(ys, options.gridPoints);
     const CurveBand bx = meanCurve(xs, grid), by = meanCurve(ys, grid);
     const std::vector<int> ix = onGrid(bx, grid), iy = onGrid(by, grid);
-    ReportLine line;
-    line.label = pressureLabel(key.pressure);
-    line.test = key.test;
-    line.pressure = key.pressure;
+    ReportLine line = lineOf(key);
     for (std::size_t k = 0; k < grid.size(); ++k) {
         if (ix[k] >= 0 && iy[k] >= 0) {
             const std::size_t a = std::size_t(ix[k]), b = std::size_t(iy[k]);
@@ -161,10 +164,7 @@ ReportLine dilatancyLine(const std::vector<ReportRun>& runs, const TestKey& key,
     }
     const CurveBand s = meanCurve(smoothed, grid), r = meanCurve(raw, grid);
     const std::vector<int> is = onGrid(s, grid), ir = onGrid(r, grid);
-    ReportLine line;
-    line.label = pressureLabel(key.pressure);
-    line.test = key.test;
-    line.pressure = key.pressure;
+    ReportLine line = lineOf(key);
     std::vector<double> rawMean, rawSd;
     for (std::size_t k = 0; k < grid.size(); ++k) {
         if (is[k] >= 0 && ir[k] >= 0) {
@@ -209,9 +209,17 @@ std::optional<double> meanDifference(const SeriesTable& t, const std::string& a,
     return sum / double(ca.y.size());
 }
 
+/// Appends the shear records' N_v/N_vi to `x` and Z_eff to `y` (the points of the fit).
+void appendFitRecords(const SeriesTable& t, std::vector<double>& x, std::vector<double>& y) {
+    const Curve cx = shearCurve(t, "Nv_over_Nvi"), cy = shearCurve(t, "Z_eff");
+    x.insert(x.end(), cx.y.begin(), cx.y.end());
+    y.insert(y.end(), cy.y.begin(), cy.y.end());
+}
+
 std::optional<LinearFit> fitOfTest(const SeriesTable& t) {
-    const Curve x = shearCurve(t, "Nv_over_Nvi"), y = shearCurve(t, "Z_eff");
-    return fitLine(x.y, y.y);
+    std::vector<double> x, y;
+    appendFitRecords(t, x, y);
+    return fitLine(x, y);
 }
 
 } // namespace
@@ -341,10 +349,7 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
                 f.lines.push_back(std::move(line));
             }
             for (const auto& [table, pressure] : tablesOf(runs, key.test)) {
-                const Curve cx = shearCurve(*table, "Nv_over_Nvi");
-                const Curve cy = shearCurve(*table, "Z_eff");
-                x.insert(x.end(), cx.y.begin(), cx.y.end());
-                y.insert(y.end(), cy.y.begin(), cy.y.end());
+                appendFitRecords(*table, x, y);
             }
         }
         f.fit = fitLine(x, y);
@@ -377,6 +382,13 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
     return figures;
 }
 
+PublishedValue publishedVoidRatio() { return {kPublishedVoidRatio, false, "0.126"}; }
+PublishedValue publishedFitSlope() { return {kPublishedFitSlope, false, "3.45"}; }
+PublishedValue publishedFitIntercept() { return {kPublishedFitIntercept, false, "2.1"}; }
+PublishedValue publishedUnbalancedForce() {
+    return {kPublishedUnbalancedForceMax, true, "< 0.4 %"};
+}
+
 Comparison compare(const Scatter& measured, const PublishedValue& published) {
     Comparison c;
     c.difference = measured.mean - published.value;
@@ -404,7 +416,7 @@ std::vector<HeadlineRow> headlineTable(const std::vector<ReportRun>& runs) {
     const Spec specs[] = {
         {"e_compacted", "e after compaction", "-",
          [](const SeriesTable& t, double p) { return shearMetrics(t, p).voidRatioAtStart; },
-         PublishedValue{kPublishedVoidRatio, false, "0.126"}},
+         publishedVoidRatio()},
         {"peak_q_over_p", "peak q/p", "-",
          [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakStressRatio; }, {}},
         {"phi_at_peak", "φ at peak", "deg",
@@ -423,16 +435,16 @@ std::vector<HeadlineRow> headlineTable(const std::vector<ReportRun>& runs) {
              const auto f = fitOfTest(t);
              return f ? std::optional<double>(f->slope) : std::nullopt;
          },
-         PublishedValue{kPublishedFitSlope, false, "3.45"}},
+         publishedFitSlope()},
         {"fit_intercept", "intercept of Z̄ on N_v/N_vi", "-",
          [](const SeriesTable& t, double) -> std::optional<double> {
              const auto f = fitOfTest(t);
              return f ? std::optional<double>(f->intercept) : std::nullopt;
          },
-         PublishedValue{kPublishedFitIntercept, false, "2.1"}},
+         publishedFitIntercept()},
         {"I_uf_mean", "mean I_uf during shear", "%",
          [](const SeriesTable& t, double p) { return shearMetrics(t, p).meanUnbalancedForce; },
-         PublishedValue{kPublishedUnbalancedForceMax, true, "< 0.4 %"}},
+         publishedUnbalancedForce()},
         {"lateral_stress_error_max", "largest lateral-stress error", "-",
          [](const SeriesTable& t, double p) { return shearMetrics(t, p).maxLateralStressError; },
          {}},
@@ -457,9 +469,7 @@ PooledFitScatter pooledFitOverRuns(const std::vector<ReportRun>& runs) {
     for (const ReportRun& r : runs) {
         std::vector<double> x, y;
         for (const SeriesTable& t : r.tests) {
-            const Curve cx = shearCurve(t, "Nv_over_Nvi"), cy = shearCurve(t, "Z_eff");
-            x.insert(x.end(), cx.y.begin(), cx.y.end());
-            y.insert(y.end(), cy.y.begin(), cy.y.end());
+            appendFitRecords(t, x, y);
         }
         if (const auto fit = fitLine(x, y)) {
             slopes.push_back(fit->slope);

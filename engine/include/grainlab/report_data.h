@@ -117,5 +117,10 @@ inline constexpr double kPublishedVoidRatio = 0.126;       ///< after compaction
 inline constexpr double kPublishedFitSlope = 3.45;         ///< Z_eff = 3.45 N_v/N_vi + 2.1
 inline constexpr double kPublishedFitIntercept = 2.1;
 inline constexpr double kPublishedUnbalancedForceMax = 0.4; ///< mean I_uf during shear < 0.4 %
+/// The same statements as compared in the table, with their text.
+PublishedValue publishedVoidRatio();
+PublishedValue publishedFitSlope();
+PublishedValue publishedFitIntercept();
+PublishedValue publishedUnbalancedForce();
 
 } // namespace grainlab
