@@ -34,7 +34,7 @@ StabilityCellResult measureStabilityCell(const StabilityMapSpec& spec, const Sta
     const double unit = probeTimeUnit(base);
     out.timeUnit = unit;
     const TimeStepLimit estimate = criticalTimeStep(base.shapes, base.parameters);
-    out.estimate = estimate.limit / unit;
+    out.estimate = estimate.estimate / unit;
     out.estimateTranslational = estimate.translational / unit;
     out.estimateRotational = estimate.rotational / unit;
     const ProbeSettings settings = stabilityProbeSettings(spec, cell);

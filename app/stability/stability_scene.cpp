@@ -80,7 +80,7 @@ SimulationState stabilityProbeState(const StabilityMapSpec& spec, const Stabilit
     p.friction = spec.friction;
     p.damping = damping;
     p.threads = 1;
-    p.timeStep = 0.5 * criticalTimeStep(s.shapes, p).limit;
+    p.timeStep = 0.5 * criticalTimeStep(s.shapes, p).estimate;
     s.axes = {AxisControl{}, AxisControl{}}; // a fixed cell
     s.servoIntegral = {0.0, 0.0};
     s.velocityGradient = {};

@@ -78,7 +78,7 @@ std::optional<double> knobValueIn(const std::string& experimentText, KnobKind ki
     const double dt = c.parameters.timeStep;
     switch (kind) {
     case KnobKind::TimeStepFraction:
-        return dt / criticalTimeStep(shapesOf(c), c.parameters).limit;
+        return dt / criticalTimeStep(shapesOf(c), c.parameters).estimate;
     case KnobKind::AxialStrainPerStep:
         return c.shear.axialStrainPerStep;
     case KnobKind::InertialNumber: {
@@ -207,7 +207,7 @@ std::string applySetting(const std::string& baseText, const std::string& baseSou
         double dt = c.parameters.timeStep;
         if (fraction != levels.end()) {
             const double baseStep = OrderedJson::parse(baseText).at("time_step").get<double>();
-            dt = fraction->second.number * criticalTimeStep(shapesOf(c), c.parameters).limit;
+            dt = fraction->second.number * criticalTimeStep(shapesOf(c), c.parameters).estimate;
             j["time_step"] = dt;
             if (!levels.count(KnobKind::AxialStrainPerStep) && inertial == levels.end()) {
                 // The loading rate is physics, the time step numerics: keep the strain rate

@@ -11,28 +11,29 @@ namespace grainlab {
 
 TimeStepLimit criticalTimeStep(const std::vector<OvalShape>& shapes,
                                const SimulationParameters& p) {
-    // Central differences are stable for omega_max * dt < 2. The stiffest grain with z contacts
-    // has a translational stiffness z * max(k_n, k_t) and a rotational stiffness of at most
-    // z * max(k_n, k_t) * a^2 (every contact force has a lever arm of at most a).
     TimeStepLimit out;
+    out.dampingFactor = p.damping.kind == DampingKind::CundallLocal
+                            ? 1.0 / std::sqrt(1.0 + p.damping.coefficient)
+                            : 1.0;
     out.translational = out.rotational = std::numeric_limits<double>::infinity();
     const double k = std::max(p.normalStiffness, p.tangentialStiffness) *
                      std::max(1, p.stability.designCoordination);
+    double smallest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         const OvalShape& s = shapes[i];
         const double m = p.density * s.area, inertia = p.density * s.polarMoment;
-        const double t = 2.0 * std::sqrt(m / k);
-        const double r = 2.0 * std::sqrt(inertia / (k * s.halfWidth * s.halfWidth));
+        const double t = 2.0 * std::sqrt(m / k) * out.dampingFactor;
+        const double r =
+            2.0 * std::sqrt(inertia / (k * s.halfWidth * s.halfWidth)) * out.dampingFactor;
         out.translational = std::min(out.translational, t);
-        if (r < out.rotational) {
-            out.rotational = r;
-        }
-        if (std::min(t, r) < out.limit || i == 0) {
-            out.limit = std::min(t, r);
+        out.rotational = std::min(out.rotational, r);
+        if (std::min(t, r) < smallest || i == 0) {
+            smallest = std::min(t, r);
             out.stiffestShape = static_cast<int>(i);
         }
     }
-    out.limit = std::min(out.translational, out.rotational);
+    out.estimate = std::min(out.translational, out.rotational);
+    out.limit = kTimeStepMargin * out.estimate;
     return out;
 }
 
@@ -42,22 +43,32 @@ std::string checkTimeStep(const std::vector<OvalShape>& shapes, const Simulation
     if (!(dt > 0.0) || !std::isfinite(dt)) {
         throw std::invalid_argument(fmt::format("time step {} s: must be > 0", dt));
     }
-    const auto describe = [&] {
-        return fmt::format("the stable limit is {:.4g} s (translational {:.4g} s, rotational "
-                           "{:.4g} s, set by the grain of width {:.4g} m with {} contacts)",
-                           lim.limit, lim.translational, lim.rotational,
-                           shapes[lim.stiffestShape].width, p.stability.designCoordination);
-    };
-    if (!(lim.limit > 0.0) || !std::isfinite(lim.limit)) {
+    if (!(lim.estimate > 0.0) || !std::isfinite(lim.estimate)) {
         throw std::invalid_argument(fmt::format(
             "the stable limit is not a finite positive number ({}: translational {}, rotational "
             "{}); the material's stiffness and density and the grains' shapes must give finite "
             "masses, moments of inertia and stiffnesses",
-            lim.limit, lim.translational, lim.rotational));
+            lim.estimate, lim.translational, lim.rotational));
     }
+    const auto describe = [&] {
+        const std::string local =
+            lim.dampingFactor < 1.0
+                ? fmt::format(", times {:.3g} = 1/sqrt(1 + {:g}) for Cundall local damping",
+                              lim.dampingFactor, p.damping.coefficient)
+                : std::string();
+        return fmt::format(
+            "the stable limit {:.4g} s: the engine's estimate {:.4g} s (translational {:.4g} s, "
+            "rotational {:.4g} s{}, set by the grain of width {:.4g} m with {} contacts) times "
+            "the safety margin {:g}; the stability maps measured the true limit of dense and "
+            "sheared packings at {:g} to {:g} times the estimate (docs/stability.md)",
+            lim.limit, lim.estimate, lim.translational, lim.rotational, local,
+            shapes[lim.stiffestShape].width, p.stability.designCoordination, kTimeStepMargin,
+            kSmallestMeasuredLimit, kLargestMeasuredLimit);
+    };
     if (dt > lim.limit) {
-        throw std::invalid_argument(fmt::format(
-            "time step {:.4g} s is above {}; use at most {:.4g} s", dt, describe(), lim.limit));
+        throw std::invalid_argument(fmt::format("time step {:.4g} s is above {}; use at most "
+                                                "{:.4g} s",
+                                                dt, describe(), lim.limit));
     }
     if (dt > 0.8 * lim.limit) {
         return fmt::format("time step {:.4g} s is within 20 % of {}", dt, describe());

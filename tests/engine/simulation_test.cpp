@@ -103,8 +103,8 @@ TEST(PeriodicCell, AffineDeformationWithoutContactsLeavesFluctuationsAtZero) {
         ASSERT_EQ(g.omega[i], 0.0);
         // Positions follow the cell: fractional coordinates are unchanged.
         const auto sNow = toFractional(h, g.x1[i], g.x2[i]);
-        const auto sRef = toFractional(h0, sim.stateRef().reference1[i],
-                                       sim.stateRef().reference2[i]);
+        const auto sRef =
+            toFractional(h0, sim.stateRef().reference1[i], sim.stateRef().reference2[i]);
         EXPECT_NEAR(sNow[0], sRef[0], 1e-12);
         EXPECT_NEAR(sNow[1], sRef[1], 1e-12);
     }
@@ -151,6 +151,30 @@ TEST(Servo, SmallDenseAssemblyReachesIsotropicTarget) {
     }
 }
 
+TEST(Stability, LocalDampingLowersTheEstimateByTheStiffnessItAdds) {
+    // In the highest mode the velocity opposes the force at every step, so Cundall's local
+    // damping adds alpha |F| along F: a stiffness (1 + alpha) k, a step 1 / sqrt(1 + alpha).
+    std::vector<OvalShape> shapes{makeOval(1e-3, 0.6), makeOval(2e-3, 0.6)};
+    SimulationParameters viscous, local;
+    local.damping = {DampingKind::CundallLocal, 0.7};
+    const TimeStepLimit a = criticalTimeStep(shapes, viscous), b = criticalTimeStep(shapes, local);
+    EXPECT_EQ(a.dampingFactor, 1.0);
+    EXPECT_DOUBLE_EQ(b.dampingFactor, 1.0 / std::sqrt(1.7));
+    EXPECT_DOUBLE_EQ(b.translational, a.translational / std::sqrt(1.7));
+    EXPECT_DOUBLE_EQ(b.rotational, a.rotational / std::sqrt(1.7));
+    EXPECT_DOUBLE_EQ(b.limit, a.limit / std::sqrt(1.7));
+    local.timeStep = 0.5 * (a.limit + b.limit); // accepted with viscous damping, not with local
+    viscous.timeStep = local.timeStep;
+    EXPECT_NO_THROW(checkTimeStep(shapes, viscous));
+    try {
+        checkTimeStep(shapes, local);
+        FAIL() << "accepted with local damping";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("Cundall local damping"), std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(Stability, ReferenceTimeStepIsAcceptedAndUnstableOnesRefused) {
     std::vector<OvalShape> shapes;
     for (double w = 1e-3; w <= 2.0001e-3; w += 1e-4) {
@@ -172,6 +196,26 @@ TEST(Stability, ReferenceTimeStepIsAcceptedAndUnstableOnesRefused) {
     }
     p.timeStep = 0.9 * lim.limit;
     EXPECT_NE(checkTimeStep(shapes, p).find("within 20 %"), std::string::npos);
+    p.timeStep = lim.limit; // the limit itself is accepted
+    EXPECT_NO_THROW(checkTimeStep(shapes, p));
+    // The limit is the estimate times the margin, and the message says so.
+    EXPECT_DOUBLE_EQ(lim.limit, kTimeStepMargin * lim.estimate);
+    EXPECT_EQ(lim.estimate, std::min(lim.translational, lim.rotational));
+    p.timeStep = 1.01 * lim.limit;
+    try {
+        checkTimeStep(shapes, p);
+        FAIL() << "a step above the limit accepted";
+    } catch (const std::invalid_argument& e) {
+        const std::string text = e.what();
+        EXPECT_NE(text.find(fmt::format("estimate {:.4g} s", lim.estimate)), std::string::npos)
+            << text;
+        EXPECT_NE(text.find(fmt::format("safety margin {:g}", kTimeStepMargin)), std::string::npos)
+            << text;
+        EXPECT_NE(text.find(fmt::format("{:g} to {:g} times the estimate", kSmallestMeasuredLimit,
+                                        kLargestMeasuredLimit)),
+                  std::string::npos)
+            << text;
+    }
     // A Simulation refuses it too.
     SimulationParameters bad;
     bad.timeStep = 1e-5;
@@ -181,9 +225,9 @@ TEST(Stability, ReferenceTimeStepIsAcceptedAndUnstableOnesRefused) {
 TEST(Stability, ExplodingSceneStopsWithGrainStepAndCause) {
     // Grains pushed together far beyond any physical overlap.
     const double d = 1e-3;
-    Simulation sim(makeScene({{5e-3, 5e-3, 0, 0, 0, 0, d, 1.0},
-                              {5e-3, 5e-3 + 0.7 * d, 0, 0, 0, 0, d, 1.0}},
-                             1e-2, 1e-2, bareParameters()));
+    Simulation sim(
+        makeScene({{5e-3, 5e-3, 0, 0, 0, 0, d, 1.0}, {5e-3, 5e-3 + 0.7 * d, 0, 0, 0, 0, d, 1.0}},
+                  1e-2, 1e-2, bareParameters()));
     try {
         sim.step();
         FAIL() << "no error";
@@ -193,8 +237,7 @@ TEST(Stability, ExplodingSceneStopsWithGrainStepAndCause) {
         EXPECT_NE(e.cause.find("overlap"), std::string::npos) << e.what();
     }
     // A grain flying through several radii per step: runaway motion.
-    Simulation fast(makeScene({{5e-3, 5e-3, 0, 0, 1e3, 0, d, 1.0}}, 1e-2, 1e-2,
-                              bareParameters()));
+    Simulation fast(makeScene({{5e-3, 5e-3, 0, 0, 1e3, 0, d, 1.0}}, 1e-2, 1e-2, bareParameters()));
     try {
         fast.step();
         FAIL() << "no error";
@@ -294,8 +337,8 @@ TEST(NeighbourList, NeverMissesAContactUnderDeformation) {
                         const double l2 = net.x2[j] + h[1] * k1 + h[3] * k2 - net.x2[i];
                         const auto& A = st.shapes[st.grains.shape[i]];
                         const auto& B = st.shapes[st.grains.shape[j]];
-                        const ContactGeometry c = ovalContactAllPairs(
-                            A, st.grains.theta[i], B, st.grains.theta[j], l1, l2);
+                        const ContactGeometry c = ovalContactAllPairs(A, st.grains.theta[i], B,
+                                                                      st.grains.theta[j], l1, l2);
                         if (c.overlap > 0) {
                             expected.insert({i, j, k1, k2});
                         }

@@ -65,7 +65,7 @@ TEST(StudyPlan, OneAtATimeIsTheReferenceAndEachLevelOfEachKnob) {
     for (double w : base.assembly.widths) {
         shapes.push_back(makeOval(w, base.assembly.aspectRatio));
     }
-    const double limit = criticalTimeStep(shapes, base.parameters).limit;
+    const double limit = criticalTimeStep(shapes, base.parameters).estimate;
     const ExperimentConfig half = parseExperimentText(plan.runs[2].experimentText, "half");
     EXPECT_DOUBLE_EQ(half.parameters.timeStep, 0.5 * limit);
     // The loading rate per second is the base's: the strain per step scales with the step.
@@ -154,12 +154,12 @@ TEST(StudyPlan, AKnobsValueInAnExperimentIsTheLevelThatMadeIt) {
     EXPECT_EQ(*knobValueIn(base, KnobKind::GrainCount), 800.0);
     EXPECT_EQ(*knobValueIn(base, KnobKind::NeighbourSkin), 0.1); // the default skin
     EXPECT_FALSE(knobValueIn(base, KnobKind::Damping));
-    for (const auto& [kind, value] : std::vector<std::pair<KnobKind, double>>{
-             {KnobKind::TimeStepFraction, 0.5},
-             {KnobKind::InertialNumber, 0.0005},
-             {KnobKind::AxialStrainPerStep, 2e-6},
-             {KnobKind::NeighbourSkin, 0.3},
-             {KnobKind::Threads, 2}}) {
+    for (const auto& [kind, value] :
+         std::vector<std::pair<KnobKind, double>>{{KnobKind::TimeStepFraction, 0.5},
+                                                  {KnobKind::InertialNumber, 0.0005},
+                                                  {KnobKind::AxialStrainPerStep, 2e-6},
+                                                  {KnobKind::NeighbourSkin, 0.3},
+                                                  {KnobKind::Threads, 2}}) {
         KnobLevel level;
         level.number = value;
         const std::string made = applySetting(base, "quick.json", {{kind, level}}, 1);
