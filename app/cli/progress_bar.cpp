@@ -36,8 +36,9 @@ void ProgressBar::update(double fraction, const std::string& status) {
         }
         lastDraw_ = now;
         const int width = 30, filled = static_cast<int>(fraction * width);
-        fmt::print(stderr, "\r\033[K{} [{}{}] {:5.1f} % {} ETA {}", label_, std::string(filled, '#'),
-                   std::string(width - filled, '-'), 100.0 * fraction, status, clock(eta));
+        fmt::print(stderr, "\r\033[K{} [{}{}] {:5.1f} % {} ETA {}", label_,
+                   std::string(filled, '#'), std::string(width - filled, '-'), 100.0 * fraction,
+                   status, clock(eta));
     } else {
         const int decile = static_cast<int>(fraction * 10);
         if (decile == lastDecile_) {
@@ -47,6 +48,15 @@ void ProgressBar::update(double fraction, const std::string& status) {
         fmt::print(stderr, "{} {:5.1f} % {} elapsed {} ETA {}\n", label_, 100.0 * fraction, status,
                    clock(elapsed), clock(eta));
     }
+    std::fflush(stderr);
+}
+
+void ProgressBar::note(const std::string& line) {
+    if (terminal_) {
+        fmt::print(stderr, "\r\033[K");
+        lastDraw_ = {}; // redraw the bar at the next update
+    }
+    fmt::print(stderr, "{}\n", line);
     std::fflush(stderr);
 }
 

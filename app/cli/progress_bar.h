@@ -12,6 +12,8 @@ public:
     explicit ProgressBar(std::string label);
     /// fraction in [0, 1]; `status` is shown after the bar.
     void update(double fraction, const std::string& status = {});
+    /// Prints `line` on a line of its own above the bar (the bar is redrawn at the next update).
+    void note(const std::string& line);
     void finish();
 
 private:

@@ -152,6 +152,17 @@ int runExperimentCommand(const RunOptions& options) {
         runner = resume ? std::make_unique<ExperimentRunner>(config, std::move(point), &output)
                         : std::make_unique<ExperimentRunner>(config, &output);
         lastStep = runner->progress().step;
+        // Each warning is printed once, when it is given (a resumed run's earlier ones again
+        // at its start, so that the terminal shows them all).
+        std::size_t warned = 0;
+        const auto printWarnings = [&] {
+            const std::vector<RunWarning>& all = runner->warnings();
+            for (; warned < all.size(); ++warned) {
+                bar.note(fmt::format("grainlab run: warning ({}, step {}): {}", all[warned].test,
+                                     all[warned].step, all[warned].text));
+            }
+        };
+        printWarnings();
         while (true) {
             std::int64_t chunk = 200;
             if (stop.afterSteps > advanced) {
@@ -162,6 +173,7 @@ int runExperimentCommand(const RunOptions& options) {
             if (advanced == stop.afterSteps) {
                 std::raise(stop.signal);
             }
+            printWarnings();
             if (!more) {
                 break;
             }
@@ -210,11 +222,14 @@ int runExperimentCommand(const RunOptions& options) {
         }
         std::signal(SIGINT, previous);
         std::signal(SIGTERM, previousTerm);
+        const std::string& good = output.lastGoodCheckpoint();
         fmt::print(stderr,
-                   "grainlab run: error: {}\nThe run file {} keeps the last good checkpoint and "
-                   "every series recorded so far. Once the cause is removed (e.g. space freed), "
-                   "continue with: grainlab run --resume {}\n",
-                   e.what(), output.runFilePath(), folder);
+                   "grainlab run: error: {}\nThe run file {} keeps {} and every series recorded "
+                   "so far. Once the cause is removed (e.g. space freed), continue with: grainlab "
+                   "run --resume {}\n",
+                   e.what(), output.runFilePath(),
+                   good.empty() ? std::string("no checkpoint yet") : "its last good " + good,
+                   folder);
         return 1;
     }
     std::signal(SIGINT, previous);

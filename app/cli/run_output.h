@@ -49,8 +49,12 @@ public:
     void sample(double pressure, const SimulationState& state) override;
     void voidCells(const std::string& name, const VoidCellSet& cells) override;
     void checkpoint(const CheckpointData& data) override;
+    void warnings(const std::vector<RunWarning>& all) override;
 
     std::string runFilePath() const;
+    /// The last checkpoint a run can continue from (not a peak checkpoint) that is complete in
+    /// the run file, in words: its name, test, eps1 and step; "" before the first.
+    const std::string& lastGoodCheckpoint() const;
     std::string seriesPath(const std::string& test) const;
     /// Closes the run file and the CSV files (a closed run file is complete on disk). Nothing
     /// may be written after it.
@@ -63,6 +67,7 @@ public:
 private:
     std::string folder_;
     std::unique_ptr<RunFile> runFile_;
+    std::string lastGood_;
     std::map<std::string, std::unique_ptr<CsvSeriesAppender>> csv_;
 };
 

@@ -47,6 +47,9 @@ public:
     RunProgress progress() const override { return runner_.progress(); }
     void keepRecordSnapshots(SnapshotHistory* history) override { history_ = history; }
     std::string runFolder() const override { return folderPath_; }
+    std::string lastGoodCheckpoint() const override {
+        return folder_ ? folder_->lastGoodCheckpoint() : std::string();
+    }
     void interrupt() override {
         if (folder_ && !runner_.finished()) {
             runner_.checkpointNow("interrupted");
@@ -97,6 +100,11 @@ private:
     void voidCells(const std::string& name, const VoidCellSet& cells) override {
         if (folder_) {
             folder_->voidCells(name, cells);
+        }
+    }
+    void warnings(const std::vector<RunWarning>& all) override {
+        if (folder_) {
+            folder_->warnings(all);
         }
     }
 

@@ -34,6 +34,7 @@
 #include "grainlab/ui/parameters_panel.h"
 #include "grainlab/ui/scene_options_bar.h"
 #include "grainlab/ui/scene_view.h"
+#include "grainlab/ui/warning_label.h"
 #include "gui/duration_text.h"
 #include "gui/edited_experiment.h"
 #include "gui/study_window.h"
@@ -72,8 +73,8 @@ MainWindow::MainWindow(RunMaker maker, QWidget* parent)
       sceneOptions_(new SceneOptionsBar(scene_)), charts_(new ChartsPanel),
       inspector_(new InspectorPanel), parameters_(new ParametersPanel), stage_(new QLabel),
       speed_(new QLabel), eta_(new QLabel), cursor_(new QLabel), error_(new QLabel),
-      runFolder_(new QLabel), progress_(new QProgressBar), scrubBar_(new QWidget),
-      scrub_(new QSlider(Qt::Horizontal)), scrubLabel_(new QLabel) {
+      warning_(new WarningLabel), runFolder_(new QLabel), progress_(new QProgressBar),
+      scrubBar_(new QWidget), scrub_(new QSlider(Qt::Horizontal)), scrubLabel_(new QLabel) {
     setWindowTitle(QStringLiteral("GrainLab"));
     // OpenGL draws the grains where the platform has a graphics card; the offscreen platform
     // (tests, CI) and GRAINLAB_NO_OPENGL=1 keep the QPainter view, which draws the same picture.
@@ -124,6 +125,7 @@ MainWindow::MainWindow(RunMaker maker, QWidget* parent)
     statusBar()->addWidget(stage_);
     statusBar()->addWidget(runFolder_);
     statusBar()->addWidget(error_, 1);
+    statusBar()->addWidget(warning_, 2);
     statusBar()->addPermanentWidget(cursor_);
     statusBar()->addPermanentWidget(speed_);
     statusBar()->addPermanentWidget(progress_);
@@ -499,6 +501,7 @@ void MainWindow::refresh() {
             scene_->setSnapshot(latest);
         }
         shown_ = latest;
+        warning_->setWarnings(latest->warnings);
         std::size_t rows = 0;
         for (const auto& table : latest->series) {
             rows += table.rows.size();
@@ -634,6 +637,7 @@ bool MainWindow::openRunFile(const QString& path, QString* error) {
         return false;
     }
     controller_->pause();
+    warning_->setWarnings(runFile_->warnings);
     const int count = static_cast<int>(runFile_->checkpoints.size());
     scrubBar_->setVisible(count > 0);
     {

@@ -38,6 +38,7 @@ class ParametersPanel;
 class SceneOptionsBar;
 class SceneView;
 class StudyWindow;
+class WarningLabel;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -105,7 +106,6 @@ signals:
     void reportWritten(const QString& html);
 
 public:
-
     SimulationController& controller() { return *controller_; }
     SceneView* sceneView() const { return scene_; }
     SceneOptionsBar* sceneOptionsBar() const { return sceneOptions_; }
@@ -121,6 +121,8 @@ public:
     QLabel* runFolderLabel() const { return runFolder_; }
     QSpinBox* stepSizeEdit() const { return stepSize_; }
     QLabel* speedLabel() const { return speed_; }
+    /// The status bar's line of the run's warnings (live, or of the open run file).
+    WarningLabel* warningLabel() const { return warning_; }
     QProgressBar* progressBar() const { return progress_; }
     QSlider* runFileSlider() const { return scrub_; }
 
@@ -190,6 +192,7 @@ private:
     QLabel* eta_;
     QLabel* cursor_;
     QLabel* error_;
+    WarningLabel* warning_;
     QLabel* runFolder_;
     QProgressBar* progress_;
     QWidget* scrubBar_;

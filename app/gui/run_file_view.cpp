@@ -78,6 +78,7 @@ RunFileView openRunFile(const std::string& path) {
         }
         view.checkpointTestStart.push_back(it->second);
     }
+    view.warnings = readWarnings(path);
     return view;
 }
 

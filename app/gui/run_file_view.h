@@ -34,6 +34,8 @@ struct RunFileView {
     /// Every test's series; the test names carry the file name, e.g. "run.h5: p015kPa", so that
     /// they never merge with a live test of the same name.
     std::vector<SeriesTable> series;
+    /// The warnings the run gave (the run file's /warnings).
+    std::vector<RunWarning> warnings;
 };
 
 /// Lists a run file's checkpoints with their identities, reads its series and the orientations

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <exception>
 
+#include <fmt/format.h>
+
 namespace grainlab::ui {
 namespace {
 
@@ -277,8 +279,19 @@ void SimulationController::workerLoop() {
             }
         } catch (const std::exception& e) {
             running_ = false;
+            std::string message = e.what();
+            if (run_ && !run_->runFolder().empty()) {
+                // As `grainlab run` says it: what the folder keeps, and how to continue.
+                const std::string good = run_->lastGoodCheckpoint();
+                message += fmt::format(
+                    ". The run folder {} keeps {} and every series recorded so far; once the "
+                    "cause is removed, continue with: grainlab run --resume {}",
+                    run_->runFolder(),
+                    good.empty() ? std::string("no checkpoint yet") : "its last good " + good,
+                    run_->runFolder());
+            }
             run_.reset();
-            setState(RunState::Failed, e.what());
+            setState(RunState::Failed, message);
         }
     }
 }

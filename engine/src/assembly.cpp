@@ -22,6 +22,14 @@ std::vector<double> evenlySpacedWidths(double smallest, double largest, int coun
     return widths;
 }
 
+std::vector<OvalShape> assemblyShapes(const AssemblySpec& spec) {
+    std::vector<OvalShape> shapes;
+    for (double w : spec.widths) {
+        shapes.push_back(makeOval(w, spec.aspectRatio, spec.closure, spec.endRadiusRatio));
+    }
+    return shapes;
+}
+
 SimulationState generateGridAssembly(const AssemblySpec& spec, const SimulationParameters& p) {
     if (spec.grainCount < 1) {
         throw std::invalid_argument(fmt::format("grain count {}: must be >= 1", spec.grainCount));
@@ -38,9 +46,7 @@ SimulationState generateGridAssembly(const AssemblySpec& spec, const SimulationP
     }
     SimulationState s;
     s.parameters = p;
-    for (double w : spec.widths) {
-        s.shapes.push_back(makeOval(w, spec.aspectRatio, spec.closure, spec.endRadiusRatio));
-    }
+    s.shapes = assemblyShapes(spec);
     const double wMax = *std::max_element(spec.widths.begin(), spec.widths.end());
     const double spacing = wMax * (1.0 + spec.gap);
     // Columns along x2, rows along x1, so that L1 / L2 ~ cellAspectRatio.

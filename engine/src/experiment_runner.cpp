@@ -8,15 +8,19 @@
 #include <nlohmann/json.hpp>
 
 #include "grainlab/equilibrium.h"
+#include "grainlab/loading_rate.h"
 #include "grainlab/measures.h"
 #include "grainlab/periodic_cell.h"
+#include "grainlab/time_step.h"
 
 namespace grainlab {
 namespace {
 
 enum class Phase { Compaction = 0, Equilibration = 1, Shear = 2, Done = 3 };
 
-std::string kiloPascal(double pressure) { return fmt::format("{:g} kPa", pressure / 1000.0); }
+std::string kiloPascal(double pressure) {
+    return fmt::format("{:g} kPa", pressure / 1000.0);
+}
 
 /// Test names sort by pressure: p015kPa, p100kPa (p12.5kPa for non-integer kPa).
 std::string testName(double pressure) {
@@ -88,12 +92,12 @@ struct ExperimentRunner::Impl {
     RunOutput* output = nullptr;
     std::unique_ptr<Simulation> sim;
     Phase phase = Phase::Compaction;
-    int index = 0;                 ///< compaction pressure index, or shear pressure index
-    int calm = 0;                  ///< consecutive passing equilibrium checks
-    std::int64_t stepsTaken = 0;   ///< steps advanced by this runner object (its cost)
+    int index = 0;               ///< compaction pressure index, or shear pressure index
+    int calm = 0;                ///< consecutive passing equilibrium checks
+    std::int64_t stepsTaken = 0; ///< steps advanced by this runner object (its cost)
     std::int64_t stageStartStep = 0;
     double length1At0 = 0, length2At0 = 0, areaAt0 = 0; ///< strain references [m], [m^2]
-    double voidsAtStart = -1;      ///< N_vi of the current test
+    double voidsAtStart = -1;                           ///< N_vi of the current test
     bool haveLast = false;
     double lastEps1 = 0, lastEpsv = 0;
     std::int64_t nextRecordStep = 0, nextSnapshotStep = 0;
@@ -104,7 +108,18 @@ struct ExperimentRunner::Impl {
     std::map<double, SimulationState> samples;
     std::vector<SeriesTable> series;
     int currentSeries = -1;
-    RunningPeak peak; ///< of the shear test under way (inactive outside shear)
+    RunningPeak peak;                 ///< of the shear test under way (inactive outside shear)
+    std::vector<RunWarning> warnings; ///< every warning given so far, in order
+    CalmHistory calmHistory;          ///< of the current stage's checks: why it did not calm
+
+    void warn(const std::string& kind, const std::string& text) {
+        warnings.push_back({kind,
+                            currentSeries >= 0 ? series[currentSeries].test : kCompactionSeries,
+                            sim->stepCount(), eps1(), text});
+        if (output) {
+            output->warnings(warnings);
+        }
+    }
 
     double pressure() const {
         return phase == Phase::Compaction ? config.compaction.pressures.at(index)
@@ -169,6 +184,7 @@ struct ExperimentRunner::Impl {
         phase = Phase::Compaction;
         index = k;
         calm = 0;
+        calmHistory = {};
         stageStartStep = sim->stepCount();
         const AxisControl servo{AxisMode::Stress, 0.0, pressure()};
         sim->setAxisControl(0, servo);
@@ -187,6 +203,7 @@ struct ExperimentRunner::Impl {
         phase = Phase::Equilibration;
         index = k;
         calm = 0;
+        calmHistory = {};
         SimulationState state = samples.at(pressure());
         state.parameters.friction = config.shear.friction;
         state.parameters.servo.maxStrainRate = config.shear.maxStrainRate;
@@ -212,13 +229,16 @@ struct ExperimentRunner::Impl {
         voidsAtStart = -1;
         peak = RunningPeak{};
         const double dt = config.parameters.timeStep;
-        sim->setAxisControl(0, {AxisMode::Strain, config.shear.axialStrainPerStep / dt, 0.0,
-                                length1At0});
+        sim->setAxisControl(
+            0, {AxisMode::Strain, config.shear.axialStrainPerStep / dt, 0.0, length1At0});
         sim->setAxisControl(1, {AxisMode::Stress, 0.0, pressure()});
         // Shear events fall on whole steps counted from the start of shear (each step adds the
         // same engineering strain), so they do not depend on how advance() is chunked.
         nextRecordStep = stageStartStep;
         nextSnapshotStep = stageStartStep + strideOf(config.record.snapshotStrainInterval);
+        if (const auto text = inertialNumberWarning(config, pressure())) {
+            warn("inertial_number", *text);
+        }
     }
 
     std::int64_t strideOf(double strain) const {
@@ -248,9 +268,8 @@ struct ExperimentRunner::Impl {
         in.eps1 = eps1();
         in.eps2 = eps2();
         in.epsv = epsv();
-        in.dilatancyIndex = haveLast && in.eps1 != lastEps1
-                                ? -(in.epsv - lastEpsv) / (in.eps1 - lastEps1)
-                                : 0.0;
+        in.dilatancyIndex =
+            haveLast && in.eps1 != lastEps1 ? -(in.epsv - lastEpsv) / (in.eps1 - lastEps1) : 0.0;
         in.stress = sim->stress();
         if (phase == Phase::Shear && voidsAtStart < 0) {
             voidsAtStart = measures.voidCells.voidCount;
@@ -306,6 +325,16 @@ struct ExperimentRunner::Impl {
             rows[t.test] = t.rows.size();
         }
         j["series_rows"] = rows;
+        nlohmann::json given = nlohmann::json::array();
+        for (const RunWarning& w : warnings) {
+            given.push_back({{"kind", w.kind},
+                             {"test", w.test},
+                             {"step", w.step},
+                             {"eps1", w.axialStrain},
+                             {"text", w.text}});
+        }
+        j["warnings"] = given;
+        j["unbalanced_low"] = calmHistory.lowest;
         if (peak.active) {
             // kept_in "": the checkpoint's own state is the peak's.
             j["peak"] = peak.json(peak.step == sim->stepCount() ? std::string() : peak.keptIn);
@@ -334,6 +363,16 @@ struct ExperimentRunner::Impl {
         thetaAtRunStart = j.at("theta_at_run_start").get<std::vector<double>>();
         const std::string current = j.at("current_series");
         currentSeries = current.empty() ? -1 : seriesIndex(current);
+        // Runner states written before warnings existed have neither key.
+        if (j.contains("warnings")) {
+            for (const auto& w : j.at("warnings")) {
+                warnings.push_back(
+                    {w.at("kind"), w.at("test"), w.at("step"), w.at("eps1"), w.at("text")});
+            }
+        }
+        if (j.contains("unbalanced_low")) {
+            calmHistory.lowest = j.at("unbalanced_low").get<std::array<double, 4>>();
+        }
     }
 
     /// The running peak of a resumed run: from the runner state, with the state kept in the
@@ -457,7 +496,8 @@ struct ExperimentRunner::Impl {
                 1, std::min({nextRecordStep, nextSnapshotStep, shearEndStep()}) - now);
         }
         const std::int64_t check = criterion().checkInterval;
-        const std::int64_t nextCheck = stageStartStep + ((now - stageStartStep) / check + 1) * check;
+        const std::int64_t nextCheck =
+            stageStartStep + ((now - stageStartStep) / check + 1) * check;
         std::int64_t next = std::min(nextCheck, nextSnapshotStep);
         if (nextRecordStep > now) {
             next = std::min(next, nextRecordStep);
@@ -501,13 +541,14 @@ struct ExperimentRunner::Impl {
                 finishEquilibrium();
                 return;
             }
+            calmHistory.note(now - stageStartStep, c.maxSteps, unbalanced);
             if (now - stageStartStep >= c.maxSteps) {
                 throw std::runtime_error(fmt::format(
                     "stage '{}' did not reach equilibrium within {} steps (stress error {:.3g} % "
                     "against the tolerance {:.3g} %, unbalanced-force index {:.3g} % against "
-                    "{:.3g} %); raise the stage's criterion.max_steps or relax its criterion",
+                    "{:.3g} %); {}",
                     stageName(), c.maxSteps, 100 * error, 100 * c.stressTolerance, unbalanced,
-                    c.unbalancedForceMax));
+                    c.unbalancedForceMax, whyNotCalm(calmHistory, error, c, sim->stateRef())));
             }
         }
     }
@@ -642,6 +683,9 @@ ExperimentRunner::ExperimentRunner(ExperimentConfig config, RunOutput* output)
     impl_->sim = std::make_unique<Simulation>(generateGridAssembly(c.assembly, p));
     impl_->thetaAtRunStart = impl_->sim->stateRef().grains.theta;
     impl_->startCompaction(0);
+    if (const std::string text = checkTimeStep(impl_->sim->stateRef().shapes, p); !text.empty()) {
+        impl_->warn("time_step", text);
+    }
     // A checkpoint of the generated assembly: a run killed before its first periodic
     // checkpoint can still be resumed.
     impl_->checkpoint(impl_->checkpointLabel());
@@ -666,6 +710,9 @@ ExperimentRunner::ExperimentRunner(ExperimentConfig config, ResumePoint resume, 
     impl_->restorePeak(resume.runnerState, resume.state, std::move(resume.runningPeak));
     impl_->sim = std::make_unique<Simulation>(std::move(resume.state));
     impl_->restore(resume.runnerState);
+    if (output) {
+        output->warnings(impl_->warnings); // the file holds what its checkpoint held
+    }
 }
 
 ExperimentRunner::~ExperimentRunner() = default;
@@ -686,9 +733,13 @@ bool ExperimentRunner::advance(std::int64_t maxSteps) {
     return m.phase != Phase::Done;
 }
 
-std::int64_t ExperimentRunner::stepsTaken() const { return impl_->stepsTaken; }
+std::int64_t ExperimentRunner::stepsTaken() const {
+    return impl_->stepsTaken;
+}
 
-bool ExperimentRunner::finished() const { return impl_->phase == Phase::Done; }
+bool ExperimentRunner::finished() const {
+    return impl_->phase == Phase::Done;
+}
 
 RunProgress ExperimentRunner::progress() const {
     const Impl& m = *impl_;
@@ -696,21 +747,32 @@ RunProgress ExperimentRunner::progress() const {
     p.stage = m.stageName();
     p.test = m.currentSeries >= 0 ? m.series[m.currentSeries].test : "";
     // eps1 of the current test: during its shear, and its final value once the run is done.
-    p.axialStrain = (m.phase == Phase::Shear || m.phase == Phase::Done) &&
-                            !m.config.shear.pressures.empty()
-                        ? m.eps1()
-                        : 0.0;
+    p.axialStrain =
+        (m.phase == Phase::Shear || m.phase == Phase::Done) && !m.config.shear.pressures.empty()
+            ? m.eps1()
+            : 0.0;
     p.fraction = m.fraction();
     p.step = m.sim->stepCount();
     p.finished = m.phase == Phase::Done;
     return p;
 }
 
-const ExperimentConfig& ExperimentRunner::config() const { return impl_->config; }
-const Simulation& ExperimentRunner::simulation() const { return *impl_->sim; }
-const std::vector<SeriesTable>& ExperimentRunner::series() const { return impl_->series; }
+const ExperimentConfig& ExperimentRunner::config() const {
+    return impl_->config;
+}
+const Simulation& ExperimentRunner::simulation() const {
+    return *impl_->sim;
+}
+const std::vector<SeriesTable>& ExperimentRunner::series() const {
+    return impl_->series;
+}
+const std::vector<RunWarning>& ExperimentRunner::warnings() const {
+    return impl_->warnings;
+}
 
-void ExperimentRunner::checkpointNow(const std::string& name) { impl_->checkpoint(name); }
+void ExperimentRunner::checkpointNow(const std::string& name) {
+    impl_->checkpoint(name);
+}
 
 bool ExperimentRunner::finishedAt(const std::string& runnerState) {
     return nlohmann::json::parse(runnerState).at("phase").get<int>() == int(Phase::Done);
@@ -742,9 +804,12 @@ std::shared_ptr<Snapshot> ExperimentRunner::snapshot(SnapshotMeasures measures) 
     snap->progress = p.fraction;
     fillSnapshotScene(*snap, sim, m.thetaAtTestStart, measures);
     snap->series = m.series;
+    snap->warnings = m.warnings;
     return snap;
 }
 
-int engineThreads(const ExperimentConfig& config) { return threadsFor(config); }
+int engineThreads(const ExperimentConfig& config) {
+    return threadsFor(config);
+}
 
 } // namespace grainlab

@@ -418,6 +418,20 @@ void RunFile::flush() {
                  [&] { guarded(impl_->path, "flushing", [&] { impl_->flushNow(); }); });
 }
 
+void RunFile::warnings(const std::vector<RunWarning>& all) {
+    std::uint64_t bytes = 4096;
+    for (const RunWarning& w : all) {
+        bytes += w.text.size() + 128;
+    }
+    impl_->write(bytes, "the warnings", [&] {
+        guarded(impl_->path, "writing the warnings", [&] {
+            H5::Group root = impl_->file.openGroup("/");
+            writeWarnings(root, all);
+            impl_->flushNow();
+        });
+    });
+}
+
 void RunFile::record(const SeriesTable& table) {
     checkTable(table);
     const std::uint64_t bytes = (table.columns.size() * 8 + hdf5io::kStageTextSize) * kSeriesChunk;
@@ -738,6 +752,11 @@ std::string readRunnerState(const std::string& path, const std::string& groupPat
         const H5::Group g = file.openGroup(groupPath);
         return g.nameExists("runner_state") ? readStringDataset(g, "runner_state") : std::string();
     });
+}
+
+std::vector<RunWarning> readWarnings(const std::string& path) {
+    return withFile(path, "reading the warnings",
+                    [&](H5::H5File& file) { return hdf5io::readWarnings(file); });
 }
 
 std::vector<std::string> listCheckpoints(const std::string& path) {

@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "grainlab/contact_network.h"
+#include "grainlab/run_warning.h"
 #include "grainlab/simulation_state.h"
 #include "grainlab/void_cells.h"
 
@@ -473,6 +474,29 @@ inline std::string readStringDataset(const H5::Group& group, const std::string& 
     return splitFixedText(buffer, size, 1).front();
 }
 
+/// Texts as a one-dimensional dataset of fixed-length strings (the longest sets the length),
+/// chunked and checksummed; readStringArray() reads it back.
+inline void writeStringArray(H5::Group& group, const std::string& name,
+                             const std::vector<std::string>& texts) {
+    std::size_t size = 1;
+    for (const std::string& t : texts) {
+        size = std::max(size, t.size());
+    }
+    const H5::StrType t = fixedStringType(size);
+    const hsize_t n = texts.size(), unlimited = H5S_UNLIMITED;
+    // An empty dataset is extendible (a chunk may not exceed fixed dimensions of 0).
+    const H5::DataSpace space = n > 0 ? H5::DataSpace(1, &n) : H5::DataSpace(1, &n, &unlimited);
+    H5::DataSet ds = group.createDataSet(name, t, space, checksummedLayout(n));
+    std::vector<char> buffer(size * texts.size(), '\0');
+    for (std::size_t k = 0; k < texts.size(); ++k) {
+        std::copy(texts[k].begin(), texts[k].end(), buffer.begin() + k * size);
+    }
+    if (n > 0) {
+        ds.write(buffer.data(), t);
+    }
+    writeHash(ds, buffer.data(), buffer.size());
+}
+
 /// The fixed-length strings of a one-dimensional text dataset (a series' stage column).
 inline std::vector<std::string> readStringArray(const H5::DataSet& ds, const std::string& what) {
     const H5::DataType type = ds.getDataType();
@@ -538,6 +562,14 @@ void writeVoidCells(H5::Group& g, const VoidCellSet& cells);
 /// Writes shape_outline1/2 of checkpoint `g`: kShapeOutlinePoints points of each shape's
 /// outline in its body frame.
 void writeShapeOutlines(H5::Group& g, const std::vector<OvalShape>& shapes);
+
+// ---- the run's warnings (run_file_warnings.cpp) ---------------------------------------------
+
+/// Writes /warnings of the file whose root is `root`, replacing the older list whole (the new
+/// one is written under a scratch name and moved into place once complete).
+void writeWarnings(H5::Group& root, const std::vector<RunWarning>& all);
+/// Reads /warnings (none in a file without it).
+std::vector<RunWarning> readWarnings(const H5::Group& root);
 
 /// Opens a run file read-only and checks its format version (a readable one).
 H5::H5File openRunFileToRead(const std::string& path);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grainlab/experiment_file.h"
+#include "grainlab/loading_rate.h"
 #include "grainlab/oval_shape.h"
 #include "grainlab/time_step.h"
 
@@ -43,27 +44,6 @@ std::string folderSafe(const std::string& s) {
     return out;
 }
 
-std::vector<OvalShape> shapesOf(const ExperimentConfig& c) {
-    std::vector<OvalShape> shapes;
-    for (double w : c.assembly.widths) {
-        shapes.push_back(
-            makeOval(w, c.assembly.aspectRatio, c.assembly.closure, c.assembly.endRadiusRatio));
-    }
-    return shapes;
-}
-
-/// Mean equivalent diameter over the grains (grain i has size class i mod classes) [m].
-double meanDiameter(const ExperimentConfig& c) {
-    const std::vector<OvalShape> shapes = shapesOf(c);
-    const int n = c.assembly.grainCount, classes = static_cast<int>(shapes.size());
-    double sum = 0;
-    for (int k = 0; k < classes; ++k) {
-        const int count = n / classes + (k < n % classes ? 1 : 0);
-        sum += count * shapes[std::size_t(k)].equivalentDiameter();
-    }
-    return sum / n;
-}
-
 OrderedJson& child(OrderedJson& j, const char* key) {
     if (!j.contains(key) || !j[key].is_object()) {
         j[key] = OrderedJson::object();
@@ -78,13 +58,12 @@ std::optional<double> knobValueIn(const std::string& experimentText, KnobKind ki
     const double dt = c.parameters.timeStep;
     switch (kind) {
     case KnobKind::TimeStepFraction:
-        return dt / criticalTimeStep(shapesOf(c), c.parameters).estimate;
+        return dt / criticalTimeStep(assemblyShapes(c.assembly), c.parameters).estimate;
     case KnobKind::AxialStrainPerStep:
         return c.shear.axialStrainPerStep;
     case KnobKind::InertialNumber: {
         const double p = *std::min_element(c.shear.pressures.begin(), c.shear.pressures.end());
-        return c.shear.axialStrainPerStep / dt * meanDiameter(c) *
-               std::sqrt(c.parameters.density / p);
+        return shearInertialNumber(c, p);
     }
     case KnobKind::GrainCount:
         return double(c.assembly.grainCount);
@@ -207,7 +186,8 @@ std::string applySetting(const std::string& baseText, const std::string& baseSou
         double dt = c.parameters.timeStep;
         if (fraction != levels.end()) {
             const double baseStep = OrderedJson::parse(baseText).at("time_step").get<double>();
-            dt = fraction->second.number * criticalTimeStep(shapesOf(c), c.parameters).estimate;
+            dt = fraction->second.number *
+                 criticalTimeStep(assemblyShapes(c.assembly), c.parameters).estimate;
             j["time_step"] = dt;
             if (!levels.count(KnobKind::AxialStrainPerStep) && inertial == levels.end()) {
                 // The loading rate is physics, the time step numerics: keep the strain rate
@@ -226,14 +206,15 @@ std::string applySetting(const std::string& baseText, const std::string& baseSou
                 };
                 stretchCap(child(child(j, "compaction"), "criterion"),
                            c.compaction.criterion.maxSteps);
-                stretchCap(child(child(j, "shear"), "equilibration"), c.shear.equilibration.maxSteps);
+                stretchCap(child(child(j, "shear"), "equilibration"),
+                           c.shear.equilibration.maxSteps);
             }
         }
         if (inertial != levels.end()) {
             // At the lowest confining pressure sheared, where the inertial number is largest.
             const double p = *std::min_element(c.shear.pressures.begin(), c.shear.pressures.end());
-            const double rate =
-                inertial->second.number / (meanDiameter(c) * std::sqrt(c.parameters.density / p));
+            const double rate = inertial->second.number /
+                                (meanGrainDiameter(c) * std::sqrt(c.parameters.density / p));
             child(j, "shear")["axial_strain_per_step"] = rate * dt;
         }
         if (skin != levels.end()) {

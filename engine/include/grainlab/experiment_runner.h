@@ -25,20 +25,20 @@ namespace grainlab {
 
 /// Where a run is: which stage of which test.
 struct RunProgress {
-    std::string stage;           ///< e.g. "compaction 15 kPa", "equilibration 100 kPa", "shear 100 kPa"
-    std::string test;            ///< series the current records go to, e.g. "p100kPa"
-    double axialStrain = 0;      ///< eps1 of the current test [-]
-    double fraction = 0;         ///< of the whole experiment, estimated [0, 1]
-    std::int64_t step = 0;       ///< steps of the current simulation
+    std::string stage;      ///< e.g. "compaction 15 kPa", "equilibration 100 kPa", "shear 100 kPa"
+    std::string test;       ///< series the current records go to, e.g. "p100kPa"
+    double axialStrain = 0; ///< eps1 of the current test [-]
+    double fraction = 0;    ///< of the whole experiment, estimated [0, 1]
+    std::int64_t step = 0;  ///< steps of the current simulation
     bool finished = false;
 };
 
 /// What a run needs to continue from a checkpoint (read back from the run file).
 struct ResumePoint {
-    SimulationState state;                 ///< the checkpoint
-    std::string runnerState;               ///< the runner's own state, as checkpoint() wrote it
+    SimulationState state;                     ///< the checkpoint
+    std::string runnerState;                   ///< the runner's own state, as checkpoint() wrote it
     std::map<double, SimulationState> samples; ///< compacted samples by pressure [Pa]
-    std::vector<SeriesTable> series;       ///< the series as recorded up to the checkpoint
+    std::vector<SeriesTable> series;           ///< the series as recorded up to the checkpoint
     /// The state at the running maximum of q/p of the shear test under way, when the runner
     /// state names a checkpoint that keeps it (runningPeakCheckpoint(); the run file's group
     /// running_peak of that checkpoint). Empty otherwise.
@@ -69,6 +69,9 @@ public:
     const Simulation& simulation() const;
     /// Every test's series so far.
     const std::vector<SeriesTable>& series() const;
+    /// Every warning given so far (run_warning.h), in order; a resumed run's include those of
+    /// its checkpoint.
+    const std::vector<RunWarning>& warnings() const;
     /// Builds an immutable snapshot of now (measures computed here, not per step, unless
     /// `measures` is Later: see addSnapshotMeasures()).
     /// The snapshot is new and not yet shared: the caller may complete it before publishing.
@@ -78,7 +81,8 @@ public:
     /// True when a runner state string holds a finished run (its last checkpoint).
     static bool finishedAt(const std::string& runnerState);
     /// Rows per test in a runner state string: what a resumed run keeps of each series.
-    static std::map<std::string, std::size_t> seriesRowsAtCheckpoint(const std::string& runnerState);
+    static std::map<std::string, std::size_t>
+    seriesRowsAtCheckpoint(const std::string& runnerState);
     /// The checkpoint whose running peak (the state at the largest q/p so far of the shear test
     /// under way) a run resumed from this runner state needs in ResumePoint::runningPeak; ""
     /// when it needs none (no test under way, or the peak is at the checkpoint's own step).

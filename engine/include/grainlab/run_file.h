@@ -73,6 +73,10 @@ public:
     /// outlines, the void cells and the running peak; for a peak checkpoint also the attribute
     /// peak_checkpoint of its test. Flushes.
     void checkpoint(const CheckpointData& data) override;
+    /// Writes /warnings (replacing the older list whole, so that a resumed run's list is what
+    /// its checkpoint held plus what it gave since): one entry per warning, datasets kind, test,
+    /// step, axial_strain and text. Flushes.
+    void warnings(const std::vector<RunWarning>& all) override;
     /// Flushes everything written so far to disk.
     void flush();
 
@@ -110,8 +114,8 @@ struct CheckpointInfo {
     std::string test;      ///< "compaction", "p100kPa" ("" if not recorded)
     double pressure = 0;   ///< [Pa]
     std::int64_t step = 0;
-    double axialStrain = 0; ///< eps1 of its test [-]
-    bool peak = false;      ///< the checkpoint at the peak of q/p of its test
+    double axialStrain = 0;     ///< eps1 of its test [-]
+    bool peak = false;          ///< the checkpoint at the peak of q/p of its test
     double peakStressRatio = 0; ///< q/p there [-] (peak checkpoints only)
 };
 /// Every complete checkpoint with its identity, in write order.
@@ -157,5 +161,7 @@ SeriesTable readSeries(const std::string& path, const std::string& test);
 std::string readExperimentText(const std::string& path);
 /// The root attribute software_version of the program that created the file.
 std::string readSoftwareVersion(const std::string& path);
+/// The warnings the run gave (/warnings), in order; none for a file without the group.
+std::vector<RunWarning> readWarnings(const std::string& path);
 
 } // namespace grainlab

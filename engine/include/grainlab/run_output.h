@@ -1,7 +1,7 @@
 #pragma once
 // The interface through which the experiment runner hands out what a run produces: series
-// records, checkpoints with the identity of their stage, their contacts and void cells, and
-// compacted samples.
+// records, checkpoints with the identity of their stage, their contacts and void cells,
+// compacted samples and the run's warnings.
 // Implemented by the run file (run_file.h), the run output folder of `grainlab run`, the
 // window's run adapter and tests. Called on the thread that drives the runner.
 
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "grainlab/contact_network.h"
+#include "grainlab/run_warning.h"
 #include "grainlab/series.h"
 #include "grainlab/simulation_state.h"
 #include "grainlab/void_cells.h"
@@ -70,6 +71,9 @@ public:
         (void)name;
         (void)cells;
     }
+    /// Every warning the run has given so far (run_warning.h), after a new one and when a resumed
+    /// run starts (its list is what its checkpoint held). By default dropped.
+    virtual void warnings(const std::vector<RunWarning>& all) { (void)all; }
     /// A checkpoint with its contacts, void cells and the running peak: the runner calls this
     /// one. By default it hands the checkpoint (with its identity) and its void cells to the
     /// calls above and drops the contacts and the running peak; the run file stores it all.

@@ -11,41 +11,43 @@
 
 #include "grainlab/contact_network.h"
 #include "grainlab/oval_shape.h"
+#include "grainlab/run_warning.h"
 #include "grainlab/series.h"
 
 namespace grainlab {
 
 /// One void cell as drawn and inspected (see void_cells.h for the definitions).
 struct VoidCellView {
-    std::vector<std::int32_t> grains;   ///< grains around the cell, in order
-    std::vector<double> x1, x2;         ///< polygon vertices, absolute, may leave the cell [m]
-    double area = 0;                    ///< [m^2]
-    double elongation = 1;              ///< principal-axis ratio >= 1 [-]
-    double direction = 0;               ///< major-axis angle from x1 [rad]
+    std::vector<std::int32_t> grains;    ///< grains around the cell, in order
+    std::vector<double> x1, x2;          ///< polygon vertices, absolute, may leave the cell [m]
+    double area = 0;                     ///< [m^2]
+    double elongation = 1;               ///< principal-axis ratio >= 1 [-]
+    double direction = 0;                ///< major-axis angle from x1 [rad]
     double centroid1 = 0, centroid2 = 0; ///< wrapped into the cell [m]
-    int valence = 0;                    ///< number of sides (grains)
+    int valence = 0;                     ///< number of sides (grains)
 };
 
 struct Snapshot {
     std::int64_t step = 0;
-    double time = 0;                       ///< [s]
-    std::string stage;                     ///< e.g. "compaction 15 kPa", "shear 100 kPa"
-    std::string test;                      ///< the test the series belongs to
-    double axialStrain = 0;                ///< eps1 [-]
-    double progress = 0;                   ///< fraction of the whole experiment done [0, 1]
-    double stepsPerSecond = 0;             ///< measured engine speed
-    double etaSeconds = -1;                ///< estimated time left, -1 if unknown
+    double time = 0;           ///< [s]
+    std::string stage;         ///< e.g. "compaction 15 kPa", "shear 100 kPa"
+    std::string test;          ///< the test the series belongs to
+    double axialStrain = 0;    ///< eps1 [-]
+    double progress = 0;       ///< fraction of the whole experiment done [0, 1]
+    double stepsPerSecond = 0; ///< measured engine speed
+    double etaSeconds = -1;    ///< estimated time left, -1 if unknown
 
     std::vector<OvalShape> shapes;
-    std::vector<std::int32_t> shape;       ///< per grain: index into shapes
-    std::vector<double> x1, x2, theta;     ///< centres wrapped into the cell [m], orientation [rad]
-    std::vector<double> rotation;          ///< rotation since the start of the test [rad]
-    ContactNetwork network;                ///< touching contacts (cell, centres, forces)
+    std::vector<std::int32_t> shape;   ///< per grain: index into shapes
+    std::vector<double> x1, x2, theta; ///< centres wrapped into the cell [m], orientation [rad]
+    std::vector<double> rotation;      ///< rotation since the start of the test [rad]
+    ContactNetwork network;            ///< touching contacts (cell, centres, forces)
     /// False while the two members below are still to be computed (SnapshotMeasures::Later).
     bool measured = false;
     std::vector<std::uint8_t> loadBearing; ///< per grain: 1 if in the load-bearing graph
     std::vector<VoidCellView> voidCells;
-    std::vector<SeriesTable> series;       ///< every test's series so far (the live one last)
+    std::vector<SeriesTable> series;  ///< every test's series so far (the live one last)
+    std::vector<RunWarning> warnings; ///< every warning the run has given so far
 };
 
 using SnapshotPtr = std::shared_ptr<const Snapshot>;

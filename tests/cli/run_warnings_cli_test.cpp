@@ -1,0 +1,123 @@
+// What `grainlab run` tells the user beyond its progress (issue 16): each warning printed once,
+// also with --quiet; a killed and resumed run holds the same warnings as an uninterrupted one;
+// a failing run names its cause and the last good checkpoint it keeps.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_test_files.h"
+#include "grainlab/experiment_file.h"
+#include "grainlab/loading_rate.h"
+#include "grainlab/run_file.h"
+
+namespace grainlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Output {
+    int status = -1;
+    std::string text; ///< stdout and stderr
+};
+
+Output grainlab(const std::string& arguments, const std::string& environment = {}) {
+    const std::string command = fmt::format("{} {} {} 2>&1", environment, GRAINLAB_EXE, arguments);
+    FILE* pipe = popen(command.c_str(), "r");
+    Output out;
+    if (!pipe) {
+        return out;
+    }
+    char buffer[1024];
+    while (fgets(buffer, sizeof buffer, pipe)) {
+        out.text += buffer;
+    }
+    const int status = pclose(pipe);
+    out.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return out;
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
+        ++n;
+    }
+    return n;
+}
+
+/// The quick protocol cut to 120 grains, one pressure and a short shear, sheared at twice the
+/// quasi-static inertial number.
+nlohmann::json fastShear() {
+    nlohmann::json j = nlohmann::json::parse(
+        test::readText(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json"));
+    j["grains"]["count"] = 120;
+    j["compaction"]["pressures"] = {50e3};
+    j["shear"]["target_axial_strain"] = 0.004;
+    j["shear"]["max_strain_rate"] = 20.0;
+    j["record"]["snapshot_strain_interval"] = 1e-3;
+    j["record"]["snapshot_step_interval"] = 5000;
+    const ExperimentConfig c = parseExperimentText(j.dump(), "fast.json");
+    j["shear"]["axial_strain_per_step"] = 2.0 * kQuasiStaticInertialNumber /
+                                          shearInertialNumber(c, 50e3) * c.shear.axialStrainPerStep;
+    return j;
+}
+
+TEST(RunWarningsCommand, PrintedOnceAndKeptThroughAKillAndResume) {
+    const fs::path base = test::freshFolder("cli", "warnings");
+    const fs::path experiment = base / "fast.json";
+    std::ofstream(experiment) << fastShear().dump(2);
+
+    const Output whole = grainlab(
+        fmt::format("run {} --out {} --quiet", experiment.string(), (base / "whole").string()));
+    ASSERT_EQ(whole.status, 0) << whole.text;
+    const std::string said = "grainlab run: warning (p050kPa, step ";
+    EXPECT_EQ(count(whole.text, said), 1u) << whole.text;
+    EXPECT_NE(whole.text.find("inertial number"), std::string::npos) << whole.text;
+    const std::vector<RunWarning> expected = readWarnings((base / "whole" / "run.h5").string());
+    ASSERT_EQ(expected.size(), 1u);
+
+    // Killed in the shear, after the warning (the simulation's step counts the process's steps
+    // here: one test, from the generated assembly on; the shear takes some 1500 steps), resumed.
+    const fs::path parts = base / "parts";
+    const Output killed =
+        grainlab(fmt::format("run {} --out {} --quiet", experiment.string(), parts.string()),
+                 "GRAINLAB_TEST_STOP_AFTER_STEPS=" + std::to_string(expected[0].step + 700));
+    EXPECT_NE(killed.status, 0);
+    EXPECT_EQ(count(killed.text, said), 1u) << killed.text;
+    const Output resumed = grainlab(fmt::format("run --resume {} --quiet", parts.string()));
+    ASSERT_EQ(resumed.status, 0) << resumed.text;
+    // A resumed run repeats its earlier warnings on the terminal, and the file holds each once.
+    EXPECT_EQ(count(resumed.text, said), 1u) << resumed.text;
+    EXPECT_EQ(readWarnings((parts / "run.h5").string()), expected);
+    fs::remove_all(base);
+}
+
+TEST(RunWarningsCommand, AFailingRunNamesItsLastGoodCheckpoint) {
+    const fs::path base = test::freshFolder("cli", "lastgood");
+    nlohmann::json j = fastShear();
+    // An overlap limit no compaction can respect: the run stops with the blow-up error.
+    j["stability"]["max_overlap_fraction"] = 1e-4;
+    j["record"]["snapshot_step_interval"] = 200;
+    const fs::path experiment = base / "fail.json";
+    std::ofstream(experiment) << j.dump(2);
+    const Output out =
+        grainlab(fmt::format("run {} --out {}", experiment.string(), (base / "out").string()));
+    EXPECT_EQ(out.status, 1) << out.text;
+    EXPECT_NE(out.text.find("overlap"), std::string::npos) << out.text;
+    const std::vector<std::string> checkpoints =
+        listCheckpoints((base / "out" / "run.h5").string());
+    ASSERT_FALSE(checkpoints.empty());
+    EXPECT_NE(out.text.find("its last good checkpoint " + checkpoints.back() + " (test compaction"),
+              std::string::npos)
+        << out.text;
+    fs::remove_all(base);
+}
+
+} // namespace
+} // namespace grainlab
