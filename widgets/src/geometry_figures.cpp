@@ -59,7 +59,7 @@ PlotPainter geometryDeparturePlot(const GeometryMapSpec& spec,
     guardLine.x = {guard, guard};
     guardLine.y = {kGeometryDepartureFloor, top};
     guardLine.label = QObject::tr("overlap guard, stability.max_overlap_fraction = %1").arg(guard);
-    guardLine.colour = QColor(200, 30, 30);
+    guardLine.colour = QColor(0, 0, 0);
     guardLine.width = 2.5;
     plot.curves.push_back(guardLine);
     return plot;

@@ -121,7 +121,7 @@ PlotPainter servoStableGainPlot(const std::vector<ServoCellResult>& results, dou
     bound.y = {gainBound, gainBound};
     bound.label = QObject::tr("the experiment file's bound, servo.gain ≤ %1")
                       .arg(QString::number(gainBound, 'g', 3));
-    bound.colour = QColor(200, 30, 30);
+    bound.colour = QColor(0, 0, 0);
     bound.width = 2.5;
     plot.curves.push_back(bound);
     return plot;
