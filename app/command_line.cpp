@@ -109,11 +109,13 @@ int runCommandLine(int argc, char** argv) {
 
     StabilityOptions stability;
     auto* stabilityCommand = app.add_subcommand(
-        "stability", "measure where the explicit integration fails: the largest stable time "
-                     "step over shape, stiffness ratio, damping and packing (docs/stability.md)");
+        "stability", "measure where the methods fail: the largest stable time step, the servo's "
+                     "stable gain and interval, the contact geometry's valid overlap "
+                     "(docs/stability.md)");
     stabilityCommand->add_option("preset_file", stability.presetFile, "stability preset (.json)");
     stabilityCommand->add_option("--preset", stability.preset,
-                                 "a preset of resources/stability (tiny, full)");
+                                 "a preset of resources/stability (tiny, full, servo-tiny, "
+                                 "servo-full, geometry-tiny, geometry-full)");
     stabilityCommand->add_option("--out", stability.out, "map folder (cells/, limits.csv)");
     stabilityCommand
         ->add_option("--jobs", stability.jobs, "cells at once (default: the processors)")
@@ -158,6 +160,8 @@ int runCommandLine(int argc, char** argv) {
         report.figures = writeReportFiguresHeadless;
         reproduce.figures = writeReportFiguresHeadless;
         stability.figures = writeStabilityFiguresHeadless;
+        stability.servoFigures = writeServoFiguresHeadless;
+        stability.geometryFigures = writeGeometryFiguresHeadless;
 #endif
         if (*reportCommand) {
             return runReportCommand(report);
@@ -167,10 +171,11 @@ int runCommandLine(int argc, char** argv) {
             return runReproduceCommand(reproduce);
         }
         if (*stabilityCellCommand) {
-            return runStabilityCellCommand(stabilityFolder, stabilityCell, stability.quiet);
+            return runStabilityMapCell(stabilityFolder, stabilityCell, stability.quiet);
         }
         if (*stabilityCollectCommand) {
-            return collectStabilityCommand(stabilityFolder, stability.quiet, stability.figures);
+            return collectStabilityCommand(stabilityFolder, stability.quiet, stability.figures,
+                                           stability.servoFigures);
         }
         if (*stabilityCommand) {
             if (stability.out.empty() || stability.preset.empty() == stability.presetFile.empty()) {

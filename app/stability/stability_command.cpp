@@ -1,6 +1,7 @@
 #include "stability/stability_command.h"
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <stdexcept>
@@ -9,6 +10,9 @@
 
 #include "cli/atomic_file.h"
 #include "cli/progress_bar.h"
+#include "grainlab/strict_json.h"
+#include "stability/servo_cell.h"
+#include "stability/stability_cell.h"
 #include "study/job_list.h"
 #include "study/process_pool.h"
 
@@ -25,7 +29,8 @@ extern "C" void onStabilityInterrupt(int) {
 }
 
 /// Creates the map folder, or checks that an existing one holds this very preset.
-void prepareFolder(const fs::path& dir, const StabilityMapSpec& spec) {
+void prepareFolder(const fs::path& dir, const std::string& sourceText,
+                   const std::string& sourcePath) {
     const fs::path preset = dir / "stability.json";
     if (fs::exists(dir)) {
         if (!fs::is_directory(dir)) {
@@ -39,18 +44,18 @@ void prepareFolder(const fs::path& dir, const StabilityMapSpec& spec) {
                                 "stability.json); give a new or empty folder",
                                 dir.string()));
             }
-        } else if (readWholeFile(preset.string()) != spec.sourceText) {
+        } else if (readWholeFile(preset.string()) != sourceText) {
             throw std::runtime_error(fmt::format(
                 "--out {}: the folder holds a different map (its stability.json differs from "
                 "{}); give another folder, or continue that map with its own stability.json",
-                dir.string(), spec.sourcePath));
+                dir.string(), sourcePath));
         }
     }
     for (const char* sub : {"cells", "logs"}) {
         fs::create_directories(dir / sub);
     }
     if (!fs::exists(preset)) {
-        writeFileAtomically(preset.string(), spec.sourceText);
+        writeFileAtomically(preset.string(), sourceText);
     }
 }
 
@@ -59,8 +64,8 @@ std::vector<std::string> cellArguments(const std::string& grainlab, const fs::pa
     return {grainlab, "stability", "cell", dir.string(), "--cell", id, "--quiet"};
 }
 
-std::size_t collect(const fs::path& dir, const StabilityMapSpec& spec, bool quiet,
-                    const StabilityFigureWriter& figures) {
+std::size_t collectTimeStep(const fs::path& dir, const StabilityMapSpec& spec, bool quiet,
+                            const StabilityFigureWriter& figures) {
     std::vector<StabilityCellResult> results;
     for (const StabilityCell& cell : stabilityCells(spec)) {
         const fs::path file = dir / "cells" / (cell.id + ".json");
@@ -83,6 +88,127 @@ std::size_t collect(const fs::path& dir, const StabilityMapSpec& spec, bool quie
     return results.size();
 }
 
+std::size_t collectServo(const fs::path& dir, const ServoMapSpec& spec, bool quiet,
+                         const ServoFigureWriter& figures) {
+    std::vector<ServoCellResult> results;
+    for (const ServoCell& cell : servoCells(spec)) {
+        const fs::path file = dir / "cells" / (cell.id + ".json");
+        if (fs::exists(file)) {
+            results.push_back(parseServoCellResult(readWholeFile(file.string()), file.string()));
+        }
+    }
+    writeFileAtomically((dir / "servo_limits.csv").string(), servoLimitsCsv(spec, results));
+    writeFileAtomically((dir / "servo_runs.csv").string(), servoRunsCsv(results));
+    if (figures && !results.empty()) {
+        const std::string error = figures(dir.string(), spec, results);
+        if (!error.empty()) {
+            throw std::runtime_error("writing the servo map's figures: " + error);
+        }
+    }
+    if (!quiet) {
+        fmt::print("grainlab stability: {} of {} cells done; largest stable gains in {}\n",
+                   results.size(), servoCells(spec).size(), (dir / "servo_limits.csv").string());
+    }
+    return results.size();
+}
+
+/// A map made of cells, whatever its kind: its name, its cells' ids and how its tables are
+/// written from the cells done (returns how many are).
+struct CellMap {
+    std::string name;
+    std::vector<std::string> ids;
+    std::function<std::size_t(const fs::path& dir, bool quiet)> collect;
+};
+
+CellMap cellMapOf(const fs::path& dir, const std::string& kind, const std::string& path,
+                  const StabilityFigureWriter& figures, const ServoFigureWriter& servoFigures) {
+    CellMap map;
+    if (kind == "servo") {
+        const ServoMapSpec spec = readServoPreset(path);
+        map.name = spec.name;
+        for (const ServoCell& c : servoCells(spec)) {
+            map.ids.push_back(c.id);
+        }
+        map.collect = [spec, servoFigures](const fs::path& d, bool quiet) {
+            return collectServo(d, spec, quiet, servoFigures);
+        };
+        return map;
+    }
+    if (kind != "time_step") {
+        throw std::runtime_error(fmt::format(
+            "stability {}: a {} map runs in one process and has no cells; run it again with "
+            "grainlab stability",
+            dir.string(), kind));
+    }
+    const StabilityMapSpec spec = readStabilityPreset(path);
+    map.name = spec.name;
+    for (const StabilityCell& c : stabilityCells(spec)) {
+        map.ids.push_back(c.id);
+    }
+    map.collect = [spec, figures](const fs::path& d, bool quiet) {
+        return collectTimeStep(d, spec, quiet, figures);
+    };
+    return map;
+}
+
+/// The kind of the map in a folder (its stability.json).
+std::string folderKind(const fs::path& dir, const std::string& what) {
+    const fs::path preset = dir / "stability.json";
+    if (!fs::exists(preset)) {
+        throw std::runtime_error(fmt::format("stability {} {}: no stability.json: not a stability "
+                                             "map folder",
+                                             what, dir.string()));
+    }
+    return stabilityPresetKind(readWholeFile(preset.string()), preset.string());
+}
+
+/// The geometry map, in this process: geometry.csv, geometry_limits.csv and the figure.
+int runGeometryMap(const StabilityOptions& options, const fs::path& dir, const std::string& path) {
+    if (!options.emit.empty()) {
+        throw std::runtime_error(fmt::format(
+            "--emit {}: a geometry map runs in one process (seconds to minutes); run it without "
+            "--emit",
+            options.emit));
+    }
+    const GeometryMapSpec spec = readGeometryPreset(path);
+    const auto start = std::chrono::steady_clock::now();
+    if (!options.quiet) {
+        fmt::print("grainlab stability {}: the contact-geometry map, {} aspect ratios x {} size "
+                   "ratios x {} overlaps x {} pairs; folder {}\n",
+                   spec.name, spec.aspectRatios.size(), spec.sizeRatios.size(),
+                   spec.overlaps.size(), spec.pairs, dir.string());
+    }
+    const std::vector<GeometryLevel> levels = measureGeometryMap(spec);
+    const double guard = StabilityParameters{}.maxOverlapFraction;
+    writeFileAtomically((dir / "geometry.csv").string(), geometryCsv(levels));
+    writeFileAtomically((dir / "geometry_limits.csv").string(),
+                        geometryLimitsCsv(geometryLines(spec, levels), guard));
+    if (options.geometryFigures) {
+        const std::string error = options.geometryFigures(dir.string(), spec, levels);
+        if (!error.empty()) {
+            throw std::runtime_error("writing the geometry map's figures: " + error);
+        }
+    }
+    if (!options.quiet) {
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        for (const GeometryLine& l : geometryLines(spec, levels)) {
+            const double engine = l.departureStart[int(GeometryKernel::Engine)];
+            fmt::print("  eta {}: {} (the overlap guard is at {} of the smaller width)\n",
+                       l.aspectRatio,
+                       engine > 0 ? fmt::format("the engine departs from the exact overlap from "
+                                                "{} of the smaller width",
+                                                engine)
+                                  : fmt::format("no departure up to {} of the smaller width",
+                                                l.largestMeasured),
+                       guard);
+        }
+        fmt::print("grainlab stability: done in {:.1f} s; tables in {}\n", seconds,
+                   (dir / "geometry_limits.csv").string());
+    }
+    return 0;
+}
+
 } // namespace
 
 std::string stabilityPresetPath(const std::string& name) {
@@ -95,16 +221,23 @@ int runStabilityCommand(const StabilityOptions& options) {
     }
     const std::string path =
         options.preset.empty() ? options.presetFile : stabilityPresetPath(options.preset);
-    const StabilityMapSpec spec = readStabilityPreset(path);
+    const std::string text = readInputFile(path, "stability preset");
+    const std::string kind = stabilityPresetKind(text, path);
     const fs::path dir = fs::absolute(options.out).lexically_normal();
-    prepareFolder(dir, spec);
+    if (kind == "geometry") {
+        readGeometryPreset(path); // refuse a bad preset before making the folder
+        prepareFolder(dir, text, path);
+        return runGeometryMap(options, dir, path);
+    }
+    const CellMap map = cellMapOf(dir, kind, path, options.figures, options.servoFigures);
+    prepareFolder(dir, text, path);
     const std::string grainlab = fs::absolute(options.grainlab).string();
-    const std::vector<StabilityCell> cells = stabilityCells(spec);
+    const std::vector<std::string>& cells = map.ids;
 
     if (options.emit == "slurm" || options.emit == "parallel") {
         std::vector<std::vector<std::string>> commands;
-        for (const StabilityCell& c : cells) {
-            commands.push_back(cellArguments(grainlab, dir, c.id));
+        for (const std::string& id : cells) {
+            commands.push_back(cellArguments(grainlab, dir, id));
         }
         const bool slurm = options.emit == "slurm";
         const fs::path file = dir / (slurm ? "stability.slurm" : "jobs.txt");
@@ -113,9 +246,9 @@ int runStabilityCommand(const StabilityOptions& options) {
             "Submit with: sbatch stability.slurm    Collect when all are done with:\n"
             "  {} stability collect {}\n"
             "A finished cell is not redone: resubmitting runs only the cells still missing.",
-            spec.name, shellQuote(grainlab), shellQuote(dir.string()));
+            map.name, shellQuote(grainlab), shellQuote(dir.string()));
         writeFileAtomically(file.string(),
-                            slurm ? slurmArrayScript("stability-" + spec.name, comment,
+                            slurm ? slurmArrayScript("stability-" + map.name, comment,
                                                      (dir / "logs").string(), commands, 1)
                                   : commandJobList(commands));
         fmt::print("grainlab stability: {} cells written as {}\n", cells.size(), file.string());
@@ -135,23 +268,23 @@ int runStabilityCommand(const StabilityOptions& options) {
     std::vector<std::size_t> jobCell;
     std::size_t doneBefore = 0;
     for (std::size_t i = 0; i < cells.size(); ++i) {
-        if (fs::exists(dir / "cells" / (cells[i].id + ".json"))) {
+        if (fs::exists(dir / "cells" / (cells[i] + ".json"))) {
             ++doneBefore;
             continue;
         }
-        jobs.push_back({cellArguments(grainlab, dir, cells[i].id),
-                        (dir / "logs" / (cells[i].id + ".log")).string(), 1});
+        jobs.push_back({cellArguments(grainlab, dir, cells[i]),
+                        (dir / "logs" / (cells[i] + ".log")).string(), 1});
         jobCell.push_back(i);
     }
     const int slots = options.jobs > 0 ? options.jobs : processorCount();
     if (!options.quiet) {
         fmt::print("grainlab stability {}: {} cells, {} done, at most {} at a time; folder {}\n",
-                   spec.name, cells.size(), doneBefore, slots, dir.string());
+                   map.name, cells.size(), doneBefore, slots, dir.string());
     }
     stopRequested.store(false);
     auto previous = std::signal(SIGINT, onStabilityInterrupt);
     auto previousTerm = std::signal(SIGTERM, onStabilityInterrupt);
-    ProgressBar bar(fmt::format("stability {} ({} cells)", spec.name, cells.size()));
+    ProgressBar bar(fmt::format("stability {} ({} cells)", map.name, cells.size()));
     std::vector<std::string> failed;
     const auto total = double(cells.size());
     ProcessPool pool(slots, options.jobs > 0 ? 1 << 20 : processorCount());
@@ -160,7 +293,7 @@ int runStabilityCommand(const StabilityOptions& options) {
         [&](std::size_t job, const PoolResult& r) {
             if (!r.succeeded() && !stopRequested.load()) {
                 failed.push_back(fmt::format(
-                    "{} (exit {}{}; log {})", cells[jobCell[job]].id, r.exitStatus,
+                    "{} (exit {}{}; log {})", cells[jobCell[job]], r.exitStatus,
                     r.signal ? fmt::format(", signal {}", r.signal) : "", jobs[job].logPath));
             }
         },
@@ -176,7 +309,7 @@ int runStabilityCommand(const StabilityOptions& options) {
     }
     std::signal(SIGINT, previous);
     std::signal(SIGTERM, previousTerm);
-    collect(dir, spec, options.quiet, options.figures);
+    map.collect(dir, options.quiet);
     if (stopRequested.load()) {
         fmt::print(stderr,
                    "grainlab stability: interrupted; the cells done are kept. Continue with the "
@@ -194,16 +327,28 @@ int runStabilityCommand(const StabilityOptions& options) {
 }
 
 int collectStabilityCommand(const std::string& folder, bool quiet,
-                            const StabilityFigureWriter& figures) {
+                            const StabilityFigureWriter& figures,
+                            const ServoFigureWriter& servoFigures) {
     const fs::path dir = fs::absolute(folder).lexically_normal();
-    const fs::path preset = dir / "stability.json";
-    if (!fs::exists(preset)) {
-        throw std::runtime_error(fmt::format(
-            "stability collect {}: no stability.json: not a stability map folder", dir.string()));
+    const std::string kind = folderKind(dir, "collect");
+    const CellMap map =
+        cellMapOf(dir, kind, (dir / "stability.json").string(), figures, servoFigures);
+    const std::size_t done = map.collect(dir, quiet);
+    return done == map.ids.size() ? 0 : 3;
+}
+
+int runStabilityMapCell(const std::string& folder, const std::string& cellId, bool quiet) {
+    const fs::path dir = fs::absolute(folder).lexically_normal();
+    const std::string kind = folderKind(dir, "cell");
+    if (kind == "servo") {
+        return runServoCellCommand(dir.string(), readServoPreset((dir / "stability.json").string()),
+                                   cellId, quiet);
     }
-    const StabilityMapSpec spec = readStabilityPreset(preset.string());
-    const std::size_t done = collect(dir, spec, quiet, figures);
-    return done == stabilityCells(spec).size() ? 0 : 3;
+    if (kind == "time_step") {
+        return runStabilityCellCommand(folder, cellId, quiet);
+    }
+    throw std::runtime_error(fmt::format(
+        "stability cell {}: a {} map runs in one process and has no cells", dir.string(), kind));
 }
 
 } // namespace grainlab

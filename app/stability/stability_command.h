@@ -1,16 +1,21 @@
 #pragma once
-// `grainlab stability [--preset NAME | FILE] --out DIR`: the stability map of the explicit
-// integration (docs/stability.md). Every cell of the preset is one `grainlab stability cell`
-// process run through the study's local pool (study/process_pool.h), with one progress bar for
-// the map; each writes DIR/cells/<id>.json atomically, so a killed map resumes with the same
-// command and redoes no finished cell. `--emit slurm|parallel` writes the cells as a Slurm job
-// array or a GNU parallel job list instead (study/job_list.h); `grainlab stability collect DIR`
-// writes limits.csv, accuracy.csv and, in GUI builds, the heat maps. Main thread.
+// `grainlab stability [--preset NAME | FILE] --out DIR`: the stability maps (docs/stability.md).
+// The preset's "kind" names the map: the time step of the explicit integration (the default),
+// the servo ("servo", servo_map.h) or the contact geometry ("geometry", geometry_map.h). Every
+// cell of a time-step or servo map is one `grainlab stability cell` process run through the
+// study's local pool (study/process_pool.h), with one progress bar for the map; each writes
+// DIR/cells/<id>.json atomically, so a killed map resumes with the same command and redoes no
+// finished cell. `--emit slurm|parallel` writes the cells as a Slurm job array or a GNU parallel
+// job list instead (study/job_list.h); `grainlab stability collect DIR` writes the tables
+// (limits.csv and accuracy.csv; servo_limits.csv and servo_runs.csv) and, in GUI builds, the
+// figures. The geometry map is cheap and runs in this process. Main thread.
 
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "grainlab/geometry_map.h"
+#include "grainlab/servo_map.h"
 #include "grainlab/stability_map.h"
 
 namespace grainlab {
@@ -18,6 +23,13 @@ namespace grainlab {
 /// Writes a map's figures into its folder; returns "" or what went wrong (GUI builds).
 using StabilityFigureWriter = std::function<std::string(
     const std::string& folder, const StabilityMapSpec&, const std::vector<StabilityCellResult>&)>;
+
+/// Writes a servo map's figures into its folder; returns "" or what went wrong (GUI builds).
+using ServoFigureWriter = std::function<std::string(const std::string& folder, const ServoMapSpec&,
+                                                    const std::vector<ServoCellResult>&)>;
+/// Writes a geometry map's figures into its folder; returns "" or what went wrong.
+using GeometryFigureWriter = std::function<std::string(
+    const std::string& folder, const GeometryMapSpec&, const std::vector<GeometryLevel>&)>;
 
 struct StabilityOptions {
     std::string presetFile; ///< a preset file, or
@@ -28,6 +40,8 @@ struct StabilityOptions {
     bool quiet = false;
     std::string grainlab;          ///< this executable, for the cells' commands
     StabilityFigureWriter figures; ///< writes figures/ when set
+    ServoFigureWriter servoFigures;
+    GeometryFigureWriter geometryFigures;
 };
 
 /// The preset file of a preset name (resources/stability/NAME.json of the source tree).
@@ -35,9 +49,13 @@ std::string stabilityPresetPath(const std::string& name);
 
 int runStabilityCommand(const StabilityOptions& options);
 
-/// `grainlab stability collect DIR`: limits.csv and accuracy.csv of the cells done (exit
-/// status 0 when all are, 3 when some are not yet).
+/// `grainlab stability collect DIR`: the tables of the cells done (exit status 0 when all are,
+/// 3 when some are not yet). A geometry map has no cells to collect (refused).
 int collectStabilityCommand(const std::string& folder, bool quiet,
-                            const StabilityFigureWriter& figures = {});
+                            const StabilityFigureWriter& figures = {},
+                            const ServoFigureWriter& servoFigures = {});
+
+/// `grainlab stability cell DIR --cell ID` for a map of any kind with cells.
+int runStabilityMapCell(const std::string& folder, const std::string& cellId, bool quiet);
 
 } // namespace grainlab

@@ -68,6 +68,34 @@ void checkLateralServoFollows(const JsonSection& s, const ShearSpec& shear, doub
     s.refuse("max_strain_rate", s.at("max_strain_rate"), allowed);
 }
 
+/// Refuses a servo interval above 1 whose lag number per unit gain passes kMaxServoLagPerGain,
+/// where the servo map measured the lateral stress out of its 1 % band in shear: the servo costs
+/// nothing per step, so a longer interval only lets the error build up.
+void checkServoInterval(const JsonSection& servo, const ExperimentConfig& c) {
+    const int interval = c.parameters.servo.interval;
+    if (interval == 1 || c.shear.pressures.empty()) {
+        return;
+    }
+    const double gain = c.parameters.servo.gain;
+    const double lowest = *std::min_element(c.shear.pressures.begin(), c.shear.pressures.end());
+    const double lagOfOne =
+        servoLagNumber(1, c.shear.axialStrainPerStep, c.parameters.normalStiffness, lowest);
+    const double largest = std::max(1.0, std::floor(kMaxServoLagPerGain * gain / lagOfOne));
+    if (double(interval) <= largest) {
+        return;
+    }
+    servo.refuse(
+        "interval", servo.at("interval"),
+        fmt::format("an integer in [1, {:.0f}] for this file: over one interval the axial loading "
+                    "builds up a lateral stress error that the servo removes at the rate of its "
+                    "gain, in proportion to the lag number interval x shear.axial_strain_per_step "
+                    "x material.normal_stiffness / (lowest shear pressure x 1 m) over servo.gain, "
+                    "here {:.3g}; the servo map (docs/stability.md) measured the lateral stress "
+                    "out of its 1 % band from {} on, and the bound is {} (a margin of {:.2g})",
+                    largest, double(interval) * lagOfOne / gain, kMeasuredServoLagPerGain,
+                    kMaxServoLagPerGain, kMeasuredServoLagPerGain / kMaxServoLagPerGain));
+}
+
 bool finitePositive(double x) {
     return std::isfinite(x) && x > 0.0;
 }
@@ -257,7 +285,17 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
 
     const JsonSection servo = top.child("servo", {"gain", "integral_gain", "interval"}, false);
     const ServoParameters servoDefaults;
-    p.servo.gain = servo.number("gain", openClosed(0.0, 0.5), servoDefaults.gain);
+    p.servo.gain = servo.number("gain", positive(), servoDefaults.gain);
+    if (p.servo.gain > kMaxServoGain) {
+        servo.refuse(
+            "gain", servo.at("gain"),
+            fmt::format(
+                "a number in (0, {}]: the lateral stress control of a shear was measured "
+                "to oscillate or diverge from g = {} on (the smallest stable limit over "
+                "confining pressures, grain shapes and servo intervals, docs/stability.md); "
+                "the bound keeps a margin of {:.2g} below it",
+                kMaxServoGain, kMeasuredServoGainLimit, kMeasuredServoGainLimit / kMaxServoGain));
+    }
     p.servo.integralGain =
         servo.number("integral_gain", closed(0.0, 1.0), servoDefaults.integralGain);
     p.servo.interval = static_cast<int>(servo.integer("interval", 1, kMaxInt, 1));
@@ -376,6 +414,7 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
     checkStrainRate(compaction, config.compaction.maxStrainRate, p.timeStep);
     checkStrainRate(shear, config.shear.maxStrainRate, p.timeStep);
     checkLateralServoFollows(shear, config.shear, p.timeStep);
+    checkServoInterval(servo, config);
     return config;
 }
 

@@ -105,6 +105,17 @@ const char* kAxesHeader = "cell,aspect_ratio [-],stiffness_ratio [-],damping,"
 
 } // namespace
 
+std::string stabilityPresetKind(const std::string& text, const std::string& file) {
+    const Json root = parseStrictJson(text, file);
+    if (!root.is_object()) {
+        throw JsonFileError(file, "", fmt::format("{}: a stability preset is a JSON object", file));
+    }
+    // Only the kind is read here; each kind's reader checks every other key.
+    const Json kindOnly = root.contains("kind") ? Json{{"kind", root.at("kind")}} : Json::object();
+    const JsonSection top(file, kindOnly, "", {"kind"});
+    return top.choice("kind", {"time_step", "servo", "geometry"}, std::string("time_step"));
+}
+
 StabilityMapSpec readStabilityPreset(const std::string& path) {
     StabilityMapSpec spec = parseStabilityPreset(readInputFile(path, "stability preset"), path);
     spec.sourcePath = path;
@@ -115,7 +126,9 @@ StabilityMapSpec parseStabilityPreset(const std::string& text, const std::string
     const Json root = parseStrictJson(text, file);
     StabilityMapSpec spec;
     spec.sourceText = text;
-    const JsonSection top(file, root, "", {"name", "description", "scene", "probe", "axes"});
+    const JsonSection top(file, root, "",
+                          {"kind", "name", "description", "scene", "probe", "axes"});
+    top.choice("kind", {"time_step"}, std::string("time_step"));
     spec.name = top.text("name", spec.name);
     if (spec.name.find_first_of("/\\ ") != std::string::npos) {
         top.refuse("name", top.at("name"), "a name without spaces or slashes");

@@ -261,7 +261,7 @@ TEST(ExperimentFile, OutOfRangeValuesNameTheRange) {
         {{"shear", "friction"}, -0.5, "shear.friction", "-0.5", ">= 0"},
         {{"shear", "target_axial_strain"}, 1.2, "shear.target_axial_strain", "1.2", "(0, 1)"},
         {{"shear", "axial_strain_per_step"}, 0.2, "shear.axial_strain_per_step", "0.2", "(0, 0.1)"},
-        {{"servo", "gain"}, 0.6, "servo.gain", "0.6", "(0, 0.5]"},
+        {{"servo", "gain"}, 1.5, "servo.gain", "1.5", "(0, 1]"},
         {{"servo", "interval"}, 0, "servo.interval", "0", ">= 1"},
         {{"threads"}, 0, "threads", "0", "[1, 1024]"},
         {{"seed"}, -1, "seed", "-1", ">= 0"},

@@ -38,7 +38,7 @@ struct AxisControl {
 };
 
 struct ServoParameters {
-    double gain = 0.3;           ///< g <= 0.5: fraction of the error removed per servo interval
+    double gain = 0.3;           ///< g <= 1: fraction of the error removed per servo interval
     double integralGain = 0.05;  ///< integral term, per servo interval, in units of the P rate
     double maxStrainRate = 1.0;  ///< rate cap [1/s]
     int interval = 1;            ///< servo update every `interval` steps

@@ -65,6 +65,11 @@ struct StabilityCell {
     PackingState packing;
 };
 
+/// The map a preset file describes, from its "kind": "time_step" (the default: this file's
+/// map), "servo" (servo_map.h) or "geometry" (geometry_map.h). Refuses another kind naming the
+/// file (JsonFileError).
+std::string stabilityPresetKind(const std::string& text, const std::string& sourceName);
+
 /// Reads and validates a preset file; refuses an unknown key, a wrong type or a value out of
 /// range naming the file, the key and the range (JsonFileError, strict_json.h).
 StabilityMapSpec readStabilityPreset(const std::string& path);

@@ -1,0 +1,127 @@
+// `grainlab stability` end to end on the servo and geometry presets' tiny maps, through the real
+// executable: the servo map's cells run through the pool and resume, its tables name the
+// largest stable gain of each cell with the gain far past the limit found unstable; the
+// geometry map runs in one process and writes its tables; both draw their figures.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "grainlab/geometry_map.h"
+#include "grainlab/servo_map.h"
+
+namespace grainlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path freshFolder(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() /
+                         ("grainlab-stability-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    return dir;
+}
+
+std::string text(const fs::path& p) {
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+int run(const std::string& command) {
+    const int status = std::system((command + " >/dev/null 2>&1").c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+const std::string kExe = GRAINLAB_EXE;
+
+std::size_t rows(const std::string& csv) {
+    return std::size_t(std::count(csv.begin(), csv.end(), '\n')) - 1;
+}
+
+TEST(ServoMapCommand, TinyMapEndToEndAndResumes) {
+    const fs::path dir = freshFolder("servo-tiny");
+    ASSERT_EQ(run(kExe + " stability --preset servo-tiny --out " + dir.string() + " --quiet"), 0);
+    const ServoMapSpec spec =
+        readServoPreset(std::string(GRAINLAB_SOURCE_DIR) + "/resources/stability/servo-tiny.json");
+    const auto cells = servoCells(spec);
+    ASSERT_EQ(cells.size(), 2u);
+    fs::file_time_type first;
+    for (const ServoCell& c : cells) {
+        const fs::path file = dir / "cells" / (c.id + ".json");
+        ASSERT_TRUE(fs::exists(file)) << file;
+        const ServoCellResult r = parseServoCellResult(text(file), file.string());
+        ASSERT_GE(r.runs.size(), spec.gains.size()) << c.id;
+        // The grid: g = 0.3 is stable, g = 4 (twice the loop's limit of about 2) is not, so the
+        // limit was bisected between them.
+        EXPECT_EQ(r.runs[0].gain, 0.3);
+        EXPECT_FALSE(servoUnstable(r.runs[0].response)) << c.id;
+        EXPECT_EQ(r.runs[1].gain, 4.0);
+        EXPECT_TRUE(servoUnstable(r.runs[1].response)) << c.id;
+        EXPECT_TRUE(r.limit.bracketed) << c.id;
+        EXPECT_GE(r.limit.low, 0.3) << c.id;
+        EXPECT_LT(r.limit.high, 4.0) << c.id;
+        EXPECT_LE(r.limit.high / r.limit.low - 1, spec.precision) << c.id;
+        EXPECT_GT(r.runs.size(), spec.gains.size()) << c.id << ": no bisection run";
+        EXPECT_GT(r.stiffnessOverPressure, 100) << c.id;
+        if (c.interval == 1) {
+            first = fs::last_write_time(file);
+        }
+    }
+    const std::string limits = text(dir / "servo_limits.csv");
+    EXPECT_EQ(rows(limits), 2u);
+    EXPECT_NE(limits.find("stable_gain_limit [-]"), std::string::npos);
+    EXPECT_NE(limits.find("lag_number [-]"), std::string::npos);
+    EXPECT_EQ(limits.find("nan"), std::string::npos);
+    const std::string runs = text(dir / "servo_runs.csv");
+    EXPECT_NE(runs.find("max_error [-]"), std::string::npos);
+    EXPECT_NE(runs.find(",bisection,"), std::string::npos);
+#ifdef GRAINLAB_WITH_GUI
+    EXPECT_TRUE(fs::exists(dir / "figures" / "response_eta1_p15kPa.svg"));
+    EXPECT_TRUE(fs::exists(dir / "figures" / "stable_gain.png"));
+#endif
+    // Resumes: only a removed cell runs again.
+    fs::remove(dir / "cells" / (cells[1].id + ".json"));
+    ASSERT_EQ(run(kExe + " stability --preset servo-tiny --out " + dir.string() + " --quiet"), 0);
+    EXPECT_TRUE(fs::exists(dir / "cells" / (cells[1].id + ".json")));
+    EXPECT_EQ(fs::last_write_time(dir / "cells" / (cells[0].id + ".json")), first);
+    EXPECT_EQ(run(kExe + " stability collect " + dir.string() + " --quiet"), 0);
+    // The emitted job list names the servo cells.
+    ASSERT_EQ(
+        run(kExe + " stability --preset servo-tiny --out " + dir.string() + " --emit parallel"), 0);
+    EXPECT_NE(text(dir / "jobs.txt").find(cells[1].id), std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST(GeometryMapCommand, TinyMapEndToEnd) {
+    const fs::path dir = freshFolder("geometry-tiny");
+    ASSERT_EQ(run(kExe + " stability --preset geometry-tiny --out " + dir.string() + " --quiet"),
+              0);
+    const std::string levels = text(dir / "geometry.csv");
+    EXPECT_EQ(rows(levels), 3u * 3u); // three overlaps, three kernels
+    EXPECT_NE(levels.find("overlap_fraction [-]"), std::string::npos);
+    const std::string limits = text(dir / "geometry_limits.csv");
+    EXPECT_NE(limits.find("0.6,engine,no,"), std::string::npos) << limits;
+    EXPECT_EQ(limits.find("nan"), std::string::npos);
+#ifdef GRAINLAB_WITH_GUI
+    EXPECT_TRUE(fs::exists(dir / "figures" / "departure.svg"));
+#endif
+    // One process: nothing to emit, no cells to collect.
+    EXPECT_NE(
+        run(kExe + " stability --preset geometry-tiny --out " + dir.string() + " --emit slurm"), 0);
+    EXPECT_NE(run(kExe + " stability collect " + dir.string()), 0);
+    // A preset of an unknown kind is refused.
+    const fs::path bad = dir / "bad.json";
+    std::ofstream(bad) << R"({"kind": "servos", "axes": {}})";
+    EXPECT_NE(run(kExe + " stability " + bad.string() + " --out " + (dir / "x").string()), 0);
+    EXPECT_FALSE(fs::exists(dir / "x"));
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace grainlab
