@@ -250,20 +250,29 @@ TEST(StabilityView, HoveringOrClickingASquareShowsItsCellsNumbers) {
         const QString text = v.details()->text();
         const nlohmann::json& j = c.j;
         const double limit = j.at("limit").get<double>(), estimate = j.at("estimate").get<double>();
-        QStringList want{QStringLiteral("<b>%1</b>").arg(c.id),
-                         number(limit),
-                         number(j.at("limit_low").get<double>()),
-                         number(j.at("limit_high").get<double>()),
-                         QString::fromStdString(j.at("detector").get<std::string>()),
-                         number(estimate),
-                         number(j.at("estimate_translational").get<double>()),
-                         number(j.at("estimate_rotational").get<double>()),
-                         number(limit / estimate),
-                         number(limit * j.at("time_unit").get<double>())};
+        // Each number beside its name, as the panel words it.
+        QStringList want{
+            QStringLiteral("<b>%1</b>").arg(c.id),
+            QStringLiteral("limit: <b>%1</b> √(m_min/k_n) = %2 s")
+                .arg(number(limit), number(limit * j.at("time_unit").get<double>())),
+            QStringLiteral("bracket: [%1, %2] · bracketed: %3")
+                .arg(number(j.at("limit_low").get<double>()),
+                     number(j.at("limit_high").get<double>()),
+                     j.at("bracketed").get<bool>() ? "yes" : "no"),
+            QStringLiteral(": %1 at step %2")
+                .arg(QString::fromStdString(j.at("detector").get<std::string>()))
+                .arg(j.at("detector_step").get<long long>()),
+            QStringLiteral("estimate: %1 (translational %2, rotational %3)")
+                .arg(number(estimate), number(j.at("estimate_translational").get<double>()),
+                     number(j.at("estimate_rotational").get<double>())),
+            QStringLiteral("limit / estimate: <b>%1</b>").arg(number(limit / estimate))};
         ASSERT_FALSE(j.at("accuracy").empty());
         for (const nlohmann::json& a : j.at("accuracy")) {
-            want << number(a.at("max_residual").get<double>())
-                 << number(a.at("final_residual").get<double>());
+            want << QStringLiteral("%1 of the limit (Δt %2): max %3, final %4")
+                        .arg(number(a.at("fraction").get<double>()),
+                             number(a.at("step").get<double>()),
+                             number(a.at("max_residual").get<double>()),
+                             number(a.at("final_residual").get<double>()));
         }
         for (const QString& w : want) {
             EXPECT_TRUE(text.contains(w))
