@@ -5,7 +5,8 @@
 // axes changes the picture to the smallest over the axis left out, hovering and clicking a square
 // shows the cell's numbers; folders holding something else are refused with the reason; a map
 // started from the window runs to the end and fills in, a stopped or partial one continues, and a
-// failing map shows its error. The tiny map runs once for the binary (a few seconds).
+// failing map shows its error. The tiny map runs once for the binary (a few seconds). With
+// GRAINLAB_WRITE_SCREENSHOTS=1 the last test also writes docs/images/stability-view.png.
 #include <cmath>
 #include <map>
 
