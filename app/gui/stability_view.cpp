@@ -11,7 +11,6 @@
 #include <QCoreApplication>
 #include <QCursor>
 #include <QDir>
-#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
@@ -20,12 +19,12 @@
 #include <QProcess>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QRegularExpression>
 #include <QToolTip>
 #include <QVBoxLayout>
 
 #include "grainlab/ui/heat_map_view.h"
 #include "gui/duration_text.h"
+#include "gui/stability_map_text.h"
 #include "gui/window_run_folder.h"
 
 namespace grainlab::ui {
@@ -41,10 +40,6 @@ QString q(const std::string& s) {
 
 QString number(double v) {
     return QString::number(v, 'g', 4);
-}
-
-QString yesNo(bool v) {
-    return v ? QObject::tr("yes") : QObject::tr("no");
 }
 
 QString presetsFolder() {
@@ -442,7 +437,7 @@ void StabilityView::processEnded(int exitStatus) {
     process_ = nullptr;
     lastExit_ = exitStatus;
     if (exitStatus == 0) {
-        status_->setText(tr("The map finished. %1").arg(logTail()));
+        status_->setText(tr("The map finished. %1").arg(stabilityLogSummary(logPath_)));
     } else if (exitStatus == 130 || stopping_) {
         // 130: the map stopped its cells; another status after Stop: stopped before it had
         // started any.
@@ -450,60 +445,14 @@ void StabilityView::processEnded(int exitStatus) {
     } else if (status_->text().startsWith(tr("Could not start"))) {
         // said already
     } else {
-        status_->setText(tr("The map failed (exit status %1):\n%2").arg(exitStatus).arg(logTail()));
+        status_->setText(tr("The map failed (exit status %1):\n%2")
+                             .arg(exitStatus)
+                             .arg(stabilityLogSummary(logPath_)));
     }
     rescan();
     updateControls();
     updateProgressText();
     emit mapEnded(exitStatus);
-}
-
-QString StabilityView::logTail() const {
-    QFile file(logPath_);
-    if (!file.open(QIODevice::ReadOnly)) {
-        return {};
-    }
-    // What the map itself said (its summary, an error, the failed cells with the last line of
-    // each one's log), not its opening line or its progress lines.
-    static const QRegularExpression opening(
-        QStringLiteral("^grainlab stability \\S+: \\d+ cells, "));
-    static const QRegularExpression cellLog(QStringLiteral("; log (.+)\\)$"));
-    QStringList said;
-    for (const QString& line : QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts)) {
-        if (line.startsWith(QStringLiteral("grainlab")) && !opening.match(line).hasMatch()) {
-            said << line;
-        } else if (line.startsWith(QStringLiteral("  "))) {
-            said << line; // a failed cell, listed under its heading
-            const QRegularExpressionMatch m = cellLog.match(line);
-            QFile log(m.hasMatch() ? m.captured(1) : QString());
-            if (m.hasMatch() && log.open(QIODevice::ReadOnly)) {
-                const QStringList lines =
-                    QString::fromUtf8(log.readAll()).split('\n', Qt::SkipEmptyParts);
-                if (!lines.isEmpty()) {
-                    said << QStringLiteral("    ") + lines.last();
-                }
-            }
-        }
-    }
-    return said.mid(std::max<qsizetype>(0, said.size() - 8)).join(QStringLiteral("\n"));
-}
-
-QString StabilityView::mapLogProgress() const {
-    QFile file(logPath_);
-    if (logPath_.isEmpty() || !file.open(QIODevice::ReadOnly)) {
-        return {};
-    }
-    // The map's progress bar, written as a line every 10 % when not on a terminal.
-    static const QRegularExpression bar(QStringLiteral(
-        "^stability \\S+ \\(\\d+ cells\\)\\s+([0-9.]+) % \\d+ done, (\\d+) running"));
-    QString last;
-    for (const QString& line : QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts)) {
-        const QRegularExpressionMatch m = bar.match(line);
-        if (m.hasMatch()) {
-            last = tr("the map's last report: %1 %, %2 running").arg(m.captured(1), m.captured(2));
-        }
-    }
-    return last;
 }
 
 void StabilityView::rescan() {
@@ -701,49 +650,12 @@ void StabilityView::updateProgressText() {
         const int doneHere = done - finishedAtStart_;
         const double eta = doneHere > 0 ? elapsed / doneHere * (total - done) : -1.0;
         text += tr(" · running %1 · ETA %2").arg(formatDuration(elapsed), formatDuration(eta));
-        const QString own = mapLogProgress();
+        const QString own = stabilityLogProgress(logPath_);
         if (!own.isEmpty()) {
             text += QStringLiteral(" · ") + own;
         }
     }
     progressText_->setText(text);
-}
-
-QString StabilityView::cellNumbers(const StabilityCellResult& r) const {
-    const StabilityCell& c = r.cell;
-    QStringList lines;
-    lines << QStringLiteral("<b>%1</b>").arg(q(c.id).toHtmlEscaped());
-    lines << tr("η = %1 · k_t/k_n = %2 · damping %3 · %4")
-                 .arg(number(c.aspectRatio), number(c.stiffnessRatio),
-                      q(dampingLabel(c.damping)).toHtmlEscaped(),
-                      q(packingLabel(c.packing)).toHtmlEscaped());
-    lines << tr("limit: <b>%1</b> √(m_min/k_n) = %2 s")
-                 .arg(number(r.limit.limit), number(r.limit.limit * r.timeUnit));
-    lines << tr("bracket: [%1, %2] · bracketed: %3 · probes: %4")
-                 .arg(number(r.limit.low), number(r.limit.high), yesNo(r.limit.bracketed))
-                 .arg(r.limit.probes);
-    lines << tr("detector at %1: %2 at step %3")
-                 .arg(number(r.limit.high), q(blowUpName(r.limit.detector)))
-                 .arg(r.limit.detectorStep);
-    if (!r.limit.detail.empty()) {
-        lines << QStringLiteral("<i>%1</i>").arg(q(r.limit.detail).toHtmlEscaped());
-    }
-    lines << tr("estimate: %1 (translational %2, rotational %3)")
-                 .arg(number(r.estimate), number(r.estimateTranslational),
-                      number(r.estimateRotational));
-    lines << tr("limit / estimate: <b>%1</b>")
-                 .arg(r.estimate > 0 ? number(r.limit.limit / r.estimate) : QStringLiteral("–"));
-    if (!r.accuracy.empty()) {
-        lines << tr("energy-balance residual, damping off:");
-        for (const AccuracyPoint& a : r.accuracy) {
-            lines << tr("&nbsp;&nbsp;%1 of the limit (Δt %2): max %3, final %4%5")
-                         .arg(number(a.fraction), number(a.step), number(a.maxResidual),
-                              number(a.finalResidual), a.stable ? QString() : tr(", unstable"));
-        }
-    }
-    lines << tr("compaction calm: %1 · cell time: %2 s")
-                 .arg(yesNo(r.compactionCalm), number(r.seconds));
-    return lines.join(QStringLiteral("<br>"));
 }
 
 void StabilityView::showSquare(QPoint square) {
@@ -762,7 +674,8 @@ void StabilityView::showSquare(QPoint square) {
         details_->setText(tr("%1: no finished cell yet.").arg(where));
         return;
     }
-    QString text = where + "<br>" + cellNumbers(state_->results[std::size_t(cells.front())]);
+    QString text =
+        where + "<br>" + stabilityCellNumbers(state_->results[std::size_t(cells.front())]);
     if (cells.size() > 1) {
         const auto value = StabilityValue(value_->currentData().toInt());
         text +=

@@ -120,9 +120,6 @@ private:
     void updateProgressText();
     void showSquare(QPoint cell);
     void axisChosen(QComboBox* changed, QComboBox* other, int previous);
-    QString cellNumbers(const StabilityCellResult& r) const;
-    QString logTail() const;
-    QString mapLogProgress() const;
 
     QString grainlab_;
     QString choice_;              ///< what Start runs: a shipped name, a file, "" (the folder's)
