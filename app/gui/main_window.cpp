@@ -214,6 +214,10 @@ void MainWindow::buildMenus() {
     file->addAction(saveAs_);
     file->addAction(tr("Open &run file…"), this, &MainWindow::openRunFileDialog);
     file->addAction(tr("&Study…"), this, &MainWindow::showStudyWindow);
+    file->addAction(tr("S&tability maps…"), this, [this] {
+        showStudyWindow();
+        study_->showStabilityTab();
+    });
     file->addAction(report_);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);

@@ -19,6 +19,7 @@
 #include <QProcess>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QTabWidget>
 #include <QToolTip>
 #include <QVBoxLayout>
 
@@ -26,6 +27,7 @@
 #include "grainlab/ui/plot_view.h"
 #include "grainlab/ui/study_figures.h"
 #include "gui/duration_text.h"
+#include "gui/stability_view.h"
 
 namespace grainlab::ui {
 namespace {
@@ -171,12 +173,20 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     status_->setWordWrap(true);
     status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
-    auto* layout = new QVBoxLayout(this);
+    auto* studyTab = new QWidget;
+    auto* layout = new QVBoxLayout(studyTab);
     layout->addLayout(files);
     layout->addLayout(runRow);
     layout->addLayout(chartRow);
     layout->addLayout(centre, 1);
     layout->addWidget(status_);
+    stability_ = new StabilityView(nullptr, grainlab_);
+    tabs_ = new QTabWidget;
+    tabs_->addTab(studyTab, tr("Study"));
+    tabs_->addTab(stability_, tr("Stability"));
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(4, 4, 4, 4);
+    outer->addWidget(tabs_);
     resize(1100, 720);
     redraw();
     updateControls();
@@ -194,6 +204,15 @@ StudyWindow::~StudyWindow() {
         process_->setParent(nullptr);
         process_ = nullptr;
     }
+}
+
+void StudyWindow::setExecutable(const QString& grainlab) {
+    grainlab_ = grainlab;
+    stability_->setExecutable(grainlab);
+}
+
+void StudyWindow::showStabilityTab() {
+    tabs_->setCurrentWidget(stability_);
 }
 
 QString StudyWindow::defaultStudyFolder(const QString& studyFile, const StudySpec& spec) {

@@ -7,6 +7,7 @@
 // the chosen test and metric fills in as they come. Hovering a point shows its setting and
 // numbers; clicking it asks the main window to open that setting's first finished run. The
 // figures can be exported, and recommended.json opened in the main window with one click.
+// Its second tab is the Stability view (stability_view.h), which does the same for stability maps.
 // A top-level window owned by the main window. GUI thread only (its worker thread runs only
 // scanStudyFolder()).
 
@@ -26,10 +27,12 @@ class QLabel;
 class QProcess;
 class QProgressBar;
 class QPushButton;
+class QTabWidget;
 
 namespace grainlab::ui {
 
 class PlotView;
+class StabilityView;
 
 class StudyWindow : public QWidget {
     Q_OBJECT
@@ -38,8 +41,9 @@ public:
     explicit StudyWindow(QWidget* parent = nullptr, QString grainlab = {});
     ~StudyWindow() override;
 
-    /// The executable that runs `grainlab study` (tests give the built grainlab).
-    void setExecutable(const QString& grainlab) { grainlab_ = grainlab; }
+    /// The executable that runs `grainlab study` and `grainlab stability` (tests give the built
+    /// grainlab).
+    void setExecutable(const QString& grainlab);
 
     /// Reads and plans a study file; the study folder becomes defaultStudyFolder(). Returns false
     /// and sets `error` when the file is invalid (the window keeps its previous study).
@@ -83,6 +87,11 @@ public:
     QPushButton* stopButton() const { return stopButton_; }
     QPushButton* recommendedButton() const { return recommended_; }
     QLabel* statusLabel() const { return status_; }
+    /// The Stability tab.
+    StabilityView* stabilityView() const { return stability_; }
+    QTabWidget* tabs() const { return tabs_; }
+    /// Brings the Stability tab to the front.
+    void showStabilityTab();
 
 signals:
     /// The user asked to see this run folder (runs/<run>/) in the main window.
@@ -144,6 +153,8 @@ private:
     QPushButton* export_;
     QPushButton* recommended_;
     QLabel* status_;
+    QTabWidget* tabs_;
+    StabilityView* stability_;
 };
 
 } // namespace grainlab::ui

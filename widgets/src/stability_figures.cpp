@@ -135,6 +135,11 @@ HeatMapPainter stabilityHeatMap(const StabilityMapSpec& spec,
     return map;
 }
 
+int stabilityAxisIndex(const StabilityMapSpec& spec, StabilityAxis axis,
+                       const StabilityCell& cell) {
+    return indexOn(spec, axis, cell);
+}
+
 QStringList writeStabilityFigures(const QString& folder, const StabilityMapSpec& spec,
                                   const std::vector<StabilityCellResult>& results, QString* error,
                                   const QStringList& formats, QSize size) {

@@ -29,6 +29,9 @@ enum class StabilityValue {
 HeatMapPainter stabilityHeatMap(const StabilityMapSpec& spec,
                                 const std::vector<StabilityCellResult>& results, StabilityAxis x,
                                 StabilityAxis y, StabilityValue value);
+/// The index of `cell`'s value among the spec's values on `axis`: its column (or row) in
+/// stabilityHeatMap() over that axis; -1 when the spec has no such value.
+int stabilityAxisIndex(const StabilityMapSpec& spec, StabilityAxis axis, const StabilityCell& cell);
 
 /// Writes limit_<x>_<y> and ratio_<x>_<y> for every pair of axes with more than one value on
 /// either, in each of `formats`, into `folder`; returns the files written, stops at the first

@@ -1,0 +1,713 @@
+// See stability_view.h.
+#include "gui/stability_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+
+#include <signal.h>
+
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QCursor>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProcess>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QToolTip>
+#include <QVBoxLayout>
+
+#include "grainlab/ui/heat_map_view.h"
+#include "gui/duration_text.h"
+#include "gui/stability_map_text.h"
+#include "gui/window_run_folder.h"
+
+namespace grainlab::ui {
+namespace {
+
+constexpr int kPollMs = 1000;                               ///< how often the folder is read [ms]
+const QString kPresetFileItem = QStringLiteral("\x01file"); ///< the box's "Preset file…" item
+const QPoint kNoSquare(-1, -1);
+
+QString q(const std::string& s) {
+    return QString::fromStdString(s);
+}
+
+QString number(double v) {
+    return QString::number(v, 'g', 4);
+}
+
+QString presetsFolder() {
+    return QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/stability");
+}
+
+QString axisText(StabilityAxis axis) {
+    switch (axis) {
+    case StabilityAxis::AspectRatio:
+        return QObject::tr("aspect ratio η");
+    case StabilityAxis::StiffnessRatio:
+        return QObject::tr("stiffness ratio k_t/k_n");
+    case StabilityAxis::Damping:
+        return QObject::tr("damping");
+    case StabilityAxis::Packing:
+        return QObject::tr("packing state");
+    }
+    return {};
+}
+
+std::size_t valuesOn(const StabilityMapSpec& spec, StabilityAxis axis) {
+    switch (axis) {
+    case StabilityAxis::AspectRatio:
+        return spec.aspectRatios.size();
+    case StabilityAxis::StiffnessRatio:
+        return spec.stiffnessRatios.size();
+    case StabilityAxis::Damping:
+        return spec.dampings.size();
+    case StabilityAxis::Packing:
+        return spec.packings.size();
+    }
+    return 0;
+}
+
+constexpr StabilityAxis kAxes[] = {StabilityAxis::AspectRatio, StabilityAxis::StiffnessRatio,
+                                   StabilityAxis::Damping, StabilityAxis::Packing};
+
+/// The value a square of the heat map draws for `r` (stability_figures.cpp), NaN for none.
+double shownValue(const StabilityCellResult& r, StabilityValue value) {
+    if (!(r.estimate > 0)) {
+        return NAN;
+    }
+    return value == StabilityValue::Limit ? r.limit.limit : r.limit.limit / r.estimate;
+}
+
+} // namespace
+
+StabilityView::StabilityView(QWidget* parent, QString grainlab)
+    : QWidget(parent),
+      grainlab_(grainlab.isEmpty() ? QCoreApplication::applicationFilePath() : grainlab),
+      workerContext_(new QObject) {
+    workerContext_->moveToThread(&worker_);
+    worker_.start();
+    poll_.setInterval(kPollMs);
+    connect(&poll_, &QTimer::timeout, this, [this] {
+        rescan();
+        updateProgressText();
+    });
+
+    preset_ = new QComboBox;
+    preset_->setToolTip(tr("The map Start runs into the folder"));
+    preset_->addItem(tr("the folder's map (its stability.json)"), QString());
+    for (const QString& name : shippedPresets()) {
+        preset_->addItem(name, name);
+    }
+    preset_->addItem(tr("Preset file…"), kPresetFileItem);
+    connect(preset_, &QComboBox::activated, this, &StabilityView::presetChosenInBox);
+    presetLabel_ = new QLabel;
+    presetLabel_->setWordWrap(true);
+    presetLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    folderLabel_ = new QLabel(tr("–"));
+    folderLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    folderButton_ = new QPushButton(tr("Open folder…"));
+    folderButton_->setToolTip(tr("A map folder to show and continue, or a new or empty folder "
+                                 "for the map to start"));
+    connect(folderButton_, &QPushButton::clicked, this, &StabilityView::chooseFolderDialog);
+    auto* folderHint = new QLabel(
+        tr("By default a new map goes to stability-<name> in the runs folder. A folder that holds "
+           "a map shows it at once, and Start continues it: finished cells are not redone."));
+    folderHint->setWordWrap(true);
+    folderHint->setStyleSheet(QStringLiteral("color: gray"));
+
+    auto* files = new QGridLayout;
+    files->addWidget(new QLabel(tr("Map:")), 0, 0);
+    files->addWidget(preset_, 0, 1);
+    files->addWidget(presetLabel_, 0, 2, 1, 2);
+    files->addWidget(new QLabel(tr("Map folder:")), 1, 0);
+    files->addWidget(folderLabel_, 1, 1, 1, 2);
+    files->addWidget(folderButton_, 1, 3);
+    files->addWidget(folderHint, 2, 1, 1, 3);
+    files->setColumnStretch(2, 1);
+
+    startButton_ = new QPushButton(tr("Start"));
+    startButton_->setToolTip(tr("Run the map (grainlab stability … --out FOLDER); a stopped map "
+                                "continues where it stopped"));
+    connect(startButton_, &QPushButton::clicked, this, [this] {
+        QString error;
+        if (!start(&error)) {
+            status_->setText(error);
+        }
+    });
+    stopButton_ = new QPushButton(tr("Stop"));
+    stopButton_->setToolTip(tr("Stop the map: the cells done are kept; Start continues"));
+    connect(stopButton_, &QPushButton::clicked, this, &StabilityView::stop);
+    bar_ = new QProgressBar;
+    bar_->setFormat(tr("%v / %m cells"));
+    bar_->setRange(0, 1);
+    bar_->setValue(0);
+    progressText_ = new QLabel;
+    auto* runRow = new QHBoxLayout;
+    runRow->addWidget(startButton_);
+    runRow->addWidget(stopButton_);
+    runRow->addWidget(bar_, 1);
+    runRow->addWidget(progressText_);
+
+    xAxis_ = new QComboBox;
+    yAxis_ = new QComboBox;
+    for (StabilityAxis a : kAxes) {
+        xAxis_->addItem(axisText(a), int(a));
+        yAxis_->addItem(axisText(a), int(a));
+    }
+    xAxis_->setCurrentIndex(lastX_);
+    yAxis_->setCurrentIndex(lastY_);
+    xAxis_->setToolTip(tr("The axis across the heat map"));
+    yAxis_->setToolTip(tr("The axis up the heat map; each square shows the smallest value over "
+                          "the other two axes"));
+    connect(xAxis_, &QComboBox::currentIndexChanged, this,
+            [this] { axisChosen(xAxis_, yAxis_, lastX_); });
+    connect(yAxis_, &QComboBox::currentIndexChanged, this,
+            [this] { axisChosen(yAxis_, xAxis_, lastY_); });
+    value_ = new QComboBox;
+    value_->addItem(tr("measured limit (the estimate below)"), int(StabilityValue::Limit));
+    value_->addItem(tr("limit / estimate"), int(StabilityValue::LimitOverEstimate));
+    connect(value_, &QComboBox::currentIndexChanged, this, &StabilityView::redraw);
+    auto* mapRow = new QHBoxLayout;
+    mapRow->addWidget(new QLabel(tr("Across:")));
+    mapRow->addWidget(xAxis_);
+    mapRow->addWidget(new QLabel(tr("Up:")));
+    mapRow->addWidget(yAxis_);
+    mapRow->addWidget(new QLabel(tr("Show:")));
+    mapRow->addWidget(value_);
+    mapRow->addStretch(1);
+
+    heatMap_ = new HeatMapView;
+    heatMap_->setToolTip(tr("Hover or click a square for its cells' numbers"));
+    connect(heatMap_, &HeatMapView::cellHovered, this, [this](QPoint square) {
+        showSquare(square == kNoSquare ? selected_ : square);
+        if (square != kNoSquare && heatMap_->underMouse()) {
+            QToolTip::showText(QCursor::pos(), details_->text(), heatMap_);
+        }
+    });
+    connect(heatMap_, &HeatMapView::cellClicked, this, [this](QPoint square) {
+        selected_ = square;
+        heatMap_->setSelectedCell(square);
+        showSquare(square);
+    });
+    details_ = new QLabel;
+    details_->setWordWrap(true);
+    details_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    details_->setFixedWidth(320);
+    auto* centre = new QHBoxLayout;
+    centre->addWidget(heatMap_, 1);
+    centre->addWidget(details_);
+
+    status_ = new QLabel;
+    status_->setWordWrap(true);
+    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(files);
+    layout->addLayout(runRow);
+    layout->addLayout(mapRow);
+    layout->addLayout(centre, 1);
+    layout->addWidget(status_);
+
+    const QStringList shipped = shippedPresets();
+    if (shipped.contains(QStringLiteral("tiny"))) {
+        setChoice(QStringLiteral("tiny"), nullptr, true);
+    }
+    redraw();
+    updateControls();
+}
+
+StabilityView::~StabilityView() {
+    poll_.stop();
+    worker_.quit();
+    worker_.wait();
+    delete workerContext_;
+    if (process_ && process_->state() != QProcess::NotRunning) {
+        // The map goes on without the window (its output goes to a file, not to us): the
+        // process object is let go, so that its destructor does not kill it.
+        disconnect(process_, nullptr, this, nullptr);
+        process_->setParent(nullptr);
+        process_ = nullptr;
+    }
+}
+
+QStringList StabilityView::shippedPresets() {
+    QStringList names;
+    for (const QFileInfo& f :
+         QDir(presetsFolder()).entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+        names << f.completeBaseName();
+    }
+    return names;
+}
+
+QString StabilityView::defaultMapFolder(const StabilityMapSpec& spec) {
+    return QDir::cleanPath(QDir(defaultRunsFolder()).filePath("stability-" + q(spec.name)));
+}
+
+QString StabilityView::preset() const {
+    return choice_;
+}
+
+bool StabilityView::choosePreset(const QString& nameOrFile, QString* error) {
+    return setChoice(nameOrFile, error, true);
+}
+
+bool StabilityView::setChoice(const QString& nameOrFile, QString* error, bool moveDefaultFolder) {
+    if (running()) {
+        if (error) {
+            *error = tr("A map is running: stop it before choosing another.");
+        }
+        return false;
+    }
+    if (nameOrFile.isEmpty()) {
+        choice_.clear();
+        choiceSpec_ = {};
+        preset_->setCurrentIndex(0);
+        presetLabel_->setText(tr("Start continues the map the folder holds."));
+        updateControls();
+        return true;
+    }
+    const bool shipped = shippedPresets().contains(nameOrFile);
+    const QString path = shipped ? QDir(presetsFolder()).filePath(nameOrFile + ".json")
+                                 : QFileInfo(nameOrFile).absoluteFilePath();
+    StabilityMapSpec spec;
+    try {
+        spec = readStabilityPreset(path.toStdString());
+    } catch (const std::exception& e) {
+        if (error) {
+            *error = q(e.what());
+        }
+        return false;
+    }
+    choice_ = shipped ? nameOrFile : path;
+    choiceSpec_ = std::move(spec);
+    int item = preset_->findData(choice_);
+    if (item < 0) {
+        item = preset_->count() - 1; // before "Preset file…"
+        preset_->insertItem(item, QFileInfo(path).fileName(), choice_);
+    }
+    preset_->setCurrentIndex(item);
+    presetLabel_->setText(tr("%1: %2 cells (%3 × %4 × %5 × %6)%7")
+                              .arg(q(choiceSpec_.name))
+                              .arg(stabilityCells(choiceSpec_).size())
+                              .arg(choiceSpec_.aspectRatios.size())
+                              .arg(choiceSpec_.stiffnessRatios.size())
+                              .arg(choiceSpec_.dampings.size())
+                              .arg(choiceSpec_.packings.size())
+                              .arg(shipped ? QString() : QStringLiteral(", ") + path));
+    if (moveDefaultFolder && (folder_.isEmpty() || folderIsDefault_)) {
+        followFolder(defaultMapFolder(choiceSpec_), false);
+        folderIsDefault_ = true;
+    }
+    updateControls();
+    updateProgressText();
+    return true;
+}
+
+void StabilityView::presetChosenInBox(int index) {
+    const QString data = preset_->itemData(index).toString();
+    QString error;
+    if (data == kPresetFileItem) {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Stability preset"), presetsFolder(), tr("Stability presets (*.json)"));
+        if (path.isEmpty() || !choosePreset(path, &error)) {
+            preset_->setCurrentIndex(std::max(0, preset_->findData(choice_)));
+        }
+    } else if (!choosePreset(data, &error)) {
+        preset_->setCurrentIndex(std::max(0, preset_->findData(choice_)));
+    }
+    if (!error.isEmpty()) {
+        status_->setText(error);
+    }
+}
+
+void StabilityView::setMapFolder(const QString& folder) {
+    if (running()) {
+        return;
+    }
+    folderIsDefault_ = false;
+    followFolder(folder, true);
+}
+
+void StabilityView::followFolder(const QString& folder, bool adoptItsMap) {
+    folder_ = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
+    folderLabel_->setText(folder_);
+    ++generation_;
+    state_.reset();
+    lastExit_.reset();
+    adoptFolderMap_ = adoptItsMap;
+    selected_ = kNoSquare;
+    heatMap_->setSelectedCell(kNoSquare);
+    status_->clear();
+    redraw();
+    updateProgressText();
+    updateControls();
+    rescan();
+}
+
+bool StabilityView::running() const {
+    return process_ != nullptr;
+}
+
+bool StabilityView::start(QString* error) {
+    const auto fail = [error](const QString& message) {
+        if (error) {
+            *error = message;
+        }
+        return false;
+    };
+    if (running()) {
+        return fail(tr("The map is already running."));
+    }
+    if (folder_.isEmpty()) {
+        return fail(tr("Choose a map folder first."));
+    }
+    if (state_ && state_->kind == StabilityFolder::Kind::Refused) {
+        return fail(q(state_->reason));
+    }
+    const bool folderMap = state_ && state_->kind == StabilityFolder::Kind::Map;
+    if (choice_.isEmpty() && !folderMap) {
+        return fail(tr("The folder holds no map yet: choose a preset to start one."));
+    }
+    QStringList arguments{QStringLiteral("stability")};
+    if (choice_.isEmpty()) {
+        arguments << QDir(folder_).filePath(QStringLiteral("stability.json"));
+    } else if (shippedPresets().contains(choice_)) {
+        arguments << QStringLiteral("--preset") << choice_;
+    } else {
+        arguments << choice_;
+    }
+    arguments << QStringLiteral("--out") << folder_;
+    const std::string name = choice_.isEmpty() ? state_->spec.name : choiceSpec_.name;
+    // The map's own output (its progress, a failed cell's name) goes to a file: the map must not
+    // depend on the window's pipes, since it goes on when the window closes.
+    logPath_ = QDir(QDir::tempPath())
+                   .filePath(QStringLiteral("grainlab-stability-%1-%2.log")
+                                 .arg(q(name))
+                                 .arg(QCoreApplication::applicationPid()));
+    process_ = new QProcess(this);
+    process_->setStandardInputFile(QProcess::nullDevice());
+    process_->setProcessChannelMode(QProcess::MergedChannels);
+    process_->setStandardOutputFile(logPath_, QIODevice::Truncate);
+    connect(process_, &QProcess::finished, this, [this](int code, QProcess::ExitStatus status) {
+        processEnded(status == QProcess::NormalExit ? code : -1);
+    });
+    connect(process_, &QProcess::errorOccurred, this, [this](QProcess::ProcessError e) {
+        if (e == QProcess::FailedToStart) {
+            status_->setText(tr("Could not start %1: %2").arg(grainlab_, process_->errorString()));
+            processEnded(-1);
+        }
+    });
+    lastExit_.reset();
+    stopping_ = false;
+    finishedAtStart_ = state_ ? state_->finishedCount() : 0;
+    sinceStart_.start();
+    status_->setText(tr("Running: %1 %2").arg(grainlab_, arguments.join(QLatin1Char(' '))));
+    process_->start(grainlab_, arguments);
+    poll_.start();
+    updateControls();
+    updateProgressText();
+    return true;
+}
+
+void StabilityView::stop() {
+    if (process_ && process_->processId() > 0) {
+        ::kill(pid_t(process_->processId()), SIGINT);
+        stopping_ = true;
+        status_->setText(tr("Stopping: the running cells end; the cells done are kept…"));
+        stopButton_->setEnabled(false);
+    }
+}
+
+void StabilityView::processEnded(int exitStatus) {
+    if (!process_) {
+        return;
+    }
+    if (!isVisible()) {
+        poll_.stop();
+    }
+    process_->deleteLater();
+    process_ = nullptr;
+    lastExit_ = exitStatus;
+    if (exitStatus == 0) {
+        status_->setText(tr("The map finished. %1").arg(stabilityLogSummary(logPath_)));
+    } else if (exitStatus == 130 || stopping_) {
+        // 130: the map stopped its cells; another status after Stop: stopped before it had
+        // started any.
+        status_->setText(tr("Stopped: the cells done are kept; Start continues the map."));
+    } else if (status_->text().startsWith(tr("Could not start"))) {
+        // said already
+    } else {
+        status_->setText(tr("The map failed (exit status %1):\n%2")
+                             .arg(exitStatus)
+                             .arg(stabilityLogSummary(logPath_)));
+    }
+    rescan();
+    updateControls();
+    updateProgressText();
+    emit mapEnded(exitStatus);
+}
+
+void StabilityView::rescan() {
+    if (folder_.isEmpty()) {
+        return;
+    }
+    if (scanning_) {
+        rescanWanted_ = true;
+        return;
+    }
+    scanning_ = true;
+    // Everything the scan needs is copied in: the worker never touches the view.
+    QMetaObject::invokeMethod(
+        workerContext_,
+        [this, generation = generation_, folder = folder_.toStdString(), previous = state_] {
+            std::shared_ptr<const StabilityFolder> next;
+            QString error;
+            try {
+                next = scanStabilityFolder(folder, previous);
+            } catch (const std::exception& e) {
+                error = QString::fromStdString(e.what());
+            }
+            QMetaObject::invokeMethod(
+                this,
+                [this, generation, next, error] {
+                    scanning_ = false;
+                    if (generation == generation_) {
+                        if (next) {
+                            scanned(next);
+                        } else {
+                            status_->setText(error);
+                        }
+                    }
+                    if (rescanWanted_) {
+                        rescanWanted_ = false;
+                        rescan();
+                    }
+                },
+                Qt::QueuedConnection);
+        },
+        Qt::QueuedConnection);
+}
+
+void StabilityView::scanned(std::shared_ptr<const StabilityFolder> state) {
+    const bool changed = state != state_;
+    const bool newMap = state->kind == StabilityFolder::Kind::Map &&
+                        (!state_ || state_->kind != StabilityFolder::Kind::Map ||
+                         state_->presetText != state->presetText);
+    state_ = std::move(state);
+    if (changed) {
+        switch (state_->kind) {
+        case StabilityFolder::Kind::Refused:
+            status_->setText(q(state_->reason));
+            break;
+        case StabilityFolder::Kind::Map:
+            if (adoptFolderMap_) {
+                setChoice(QString(), nullptr, false);
+            }
+            if (!state_->errors.empty()) {
+                status_->setText(q(state_->errors.front()));
+            }
+            break;
+        case StabilityFolder::Kind::New:
+            if (choice_.isEmpty() && shippedPresets().contains(QStringLiteral("tiny"))) {
+                setChoice(QStringLiteral("tiny"), nullptr, false);
+            }
+            break;
+        }
+        adoptFolderMap_ = false;
+    }
+    if (newMap) {
+        // The first two axes with more than one value, then the others in order.
+        std::vector<StabilityAxis> order;
+        for (StabilityAxis a : kAxes) {
+            if (valuesOn(state_->spec, a) > 1) {
+                order.push_back(a);
+            }
+        }
+        for (StabilityAxis a : kAxes) {
+            if (valuesOn(state_->spec, a) <= 1) {
+                order.push_back(a);
+            }
+        }
+        setAxes(order[0], order[1]);
+    }
+    if (changed) {
+        redraw();
+    }
+    updateProgressText();
+    updateControls();
+    emit progressChanged();
+}
+
+StabilityAxis StabilityView::xAxis() const {
+    return StabilityAxis(xAxis_->currentData().toInt());
+}
+
+StabilityAxis StabilityView::yAxis() const {
+    return StabilityAxis(yAxis_->currentData().toInt());
+}
+
+void StabilityView::setAxes(StabilityAxis x, StabilityAxis y) {
+    if (x == y) {
+        return;
+    }
+    {
+        const QSignalBlocker blockX(xAxis_);
+        const QSignalBlocker blockY(yAxis_);
+        xAxis_->setCurrentIndex(xAxis_->findData(int(x)));
+        yAxis_->setCurrentIndex(yAxis_->findData(int(y)));
+    }
+    lastX_ = xAxis_->currentIndex();
+    lastY_ = yAxis_->currentIndex();
+    redraw();
+}
+
+void StabilityView::axisChosen(QComboBox* changed, QComboBox* other, int previous) {
+    // The same axis both ways would be a diagonal: the other box takes the axis just left.
+    if (changed->currentIndex() == other->currentIndex()) {
+        const QSignalBlocker block(other);
+        other->setCurrentIndex(previous);
+    }
+    lastX_ = xAxis_->currentIndex();
+    lastY_ = yAxis_->currentIndex();
+    redraw();
+}
+
+void StabilityView::setValue(StabilityValue value) {
+    value_->setCurrentIndex(value_->findData(int(value)));
+}
+
+std::vector<int> StabilityView::resultsInSquare(QPoint square) const {
+    std::vector<int> out;
+    if (!state_ || state_->kind != StabilityFolder::Kind::Map) {
+        return out;
+    }
+    const StabilityAxis x = xAxis(), y = yAxis();
+    for (std::size_t i = 0; i < state_->results.size(); ++i) {
+        const StabilityCell& c = state_->results[i].cell;
+        if (stabilityAxisIndex(state_->spec, x, c) == square.x() &&
+            stabilityAxisIndex(state_->spec, y, c) == square.y()) {
+            out.push_back(int(i));
+        }
+    }
+    const auto value = StabilityValue(value_->currentData().toInt());
+    std::stable_sort(out.begin(), out.end(), [&](int a, int b) {
+        const double va = shownValue(state_->results[std::size_t(a)], value);
+        const double vb = shownValue(state_->results[std::size_t(b)], value);
+        return std::isnan(vb) ? !std::isnan(va) : va < vb; // no value: last
+    });
+    return out;
+}
+
+void StabilityView::redraw() {
+    HeatMapPainter map;
+    if (!state_) {
+        map.title = folder_.isEmpty() ? tr("open a map folder or choose a preset")
+                                      : tr("reading the folder…");
+    } else if (state_->kind == StabilityFolder::Kind::Map) {
+        map = stabilityHeatMap(state_->spec, state_->results, xAxis(), yAxis(),
+                               StabilityValue(value_->currentData().toInt()));
+    } else if (state_->kind == StabilityFolder::Kind::New) {
+        map.title = tr("no map in this folder yet: Start runs the chosen preset into it");
+    } else {
+        map.title = tr("not a stability map folder (the reason is below)");
+    }
+    heatMap_->setMap(std::move(map));
+    heatMap_->setSelectedCell(selected_);
+    selected_ = heatMap_->selectedCell(); // none when the grid no longer has it
+    const QPoint hovered = heatMap_->hoveredCell();
+    showSquare(hovered != kNoSquare ? hovered : selected_);
+}
+
+void StabilityView::updateControls() {
+    const bool isRunning = running();
+    const bool refused = state_ && state_->kind == StabilityFolder::Kind::Refused;
+    const bool folderMap = state_ && state_->kind == StabilityFolder::Kind::Map;
+    startButton_->setEnabled(!isRunning && !folder_.isEmpty() && state_ && !refused &&
+                             (!choice_.isEmpty() || folderMap));
+    stopButton_->setEnabled(isRunning && !stopping_);
+    folderButton_->setEnabled(!isRunning);
+    preset_->setEnabled(!isRunning);
+}
+
+void StabilityView::updateProgressText() {
+    const bool folderMap = state_ && state_->kind == StabilityFolder::Kind::Map;
+    const int total = folderMap ? int(state_->cells.size())
+                                : (choice_.isEmpty() ? 0 : int(stabilityCells(choiceSpec_).size()));
+    const int done = folderMap ? state_->finishedCount() : 0;
+    bar_->setRange(0, std::max(1, total));
+    bar_->setValue(done);
+    QString text = tr("%1 of %2 cells finished").arg(done).arg(total);
+    if (running()) {
+        const double elapsed = double(sinceStart_.elapsed()) / 1000.0;
+        const int doneHere = done - finishedAtStart_;
+        const double eta = doneHere > 0 ? elapsed / doneHere * (total - done) : -1.0;
+        text += tr(" · running %1 · ETA %2").arg(formatDuration(elapsed), formatDuration(eta));
+        const QString own = stabilityLogProgress(logPath_);
+        if (!own.isEmpty()) {
+            text += QStringLiteral(" · ") + own;
+        }
+    }
+    progressText_->setText(text);
+}
+
+void StabilityView::showSquare(QPoint square) {
+    const HeatMapPainter& map = heatMap_->map();
+    if (square.x() < 0 || square.y() < 0 || square.x() >= map.xLabels.size() ||
+        square.y() >= map.yLabels.size()) {
+        details_->setText(tr("Hover or click a square for its cells' numbers."));
+        return;
+    }
+    const QString where = QStringLiteral("%1 = %2, %3 = %4")
+                              .arg(axisText(xAxis()), map.xLabels[square.x()], axisText(yAxis()),
+                                   map.yLabels[square.y()])
+                              .toHtmlEscaped();
+    const std::vector<int> cells = resultsInSquare(square);
+    if (cells.empty()) {
+        details_->setText(tr("%1: no finished cell yet.").arg(where));
+        return;
+    }
+    QString text =
+        where + "<br>" + stabilityCellNumbers(state_->results[std::size_t(cells.front())]);
+    if (cells.size() > 1) {
+        const auto value = StabilityValue(value_->currentData().toInt());
+        text +=
+            tr("<br><br>Also in this square (%1 cells, the drawn one first):").arg(cells.size());
+        for (std::size_t k = 1; k < cells.size(); ++k) {
+            const StabilityCellResult& r = state_->results[std::size_t(cells[k])];
+            text += QStringLiteral("<br>%1: %2")
+                        .arg(q(r.cell.id).toHtmlEscaped(), number(shownValue(r, value)));
+        }
+    }
+    details_->setText(text);
+}
+
+void StabilityView::chooseFolderDialog() {
+    const QString folder = QFileDialog::getExistingDirectory(
+        this, tr("Map folder (a map to show, or a new or empty folder)"), folder_);
+    if (!folder.isEmpty()) {
+        setMapFolder(folder);
+    }
+}
+
+void StabilityView::showEvent(QShowEvent* event) {
+    poll_.start();
+    rescan();
+    QWidget::showEvent(event);
+}
+
+void StabilityView::hideEvent(QHideEvent* event) {
+    if (!running()) {
+        poll_.stop();
+    }
+    QWidget::hideEvent(event);
+}
+
+} // namespace grainlab::ui

@@ -1,0 +1,164 @@
+#pragma once
+// The Stability view, a tab of the Study window: follows a stability map folder (what
+// `grainlab stability --out DIR` writes, docs/stability.md) and draws its heat maps as the cells
+// finish; starts a map from a preset (a shipped one or a file) as a `grainlab stability ...
+// --out DIR` process of this very executable (so it runs exactly as headless, and goes on if the
+// window closes), stops it with SIGINT (the cells done are kept; Start continues the map). A
+// timer asks the worker thread to read the cells finished since the last look
+// (stability_scan.h); the heat map of the measured limit (or of limit / estimate) over the two
+// axes chosen fills in, each square the smallest over the other two axes, as in the written
+// figures (stability_figures.h). Hovering or clicking a square shows its cells' numbers. GUI
+// thread only (its worker thread runs only scanStabilityFolder()).
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <QElapsedTimer>
+#include <QPoint>
+#include <QThread>
+#include <QTimer>
+#include <QWidget>
+
+#include "grainlab/ui/stability_figures.h"
+#include "gui/stability_scan.h"
+
+class QComboBox;
+class QLabel;
+class QProcess;
+class QProgressBar;
+class QPushButton;
+
+namespace grainlab::ui {
+
+class HeatMapView;
+
+class StabilityView : public QWidget {
+    Q_OBJECT
+public:
+    /// `grainlab`: the executable that runs `grainlab stability` (default: this application's).
+    explicit StabilityView(QWidget* parent = nullptr, QString grainlab = {});
+    ~StabilityView() override;
+
+    /// The executable that runs `grainlab stability` (tests give the built grainlab).
+    void setExecutable(const QString& grainlab) { grainlab_ = grainlab; }
+
+    /// The names of the shipped presets (resources/stability/*.json), e.g. "full", "tiny".
+    static QStringList shippedPresets();
+    /// The folder a new map of `spec` goes to unless another is chosen: "stability-<name>" in
+    /// the window's runs folder.
+    static QString defaultMapFolder(const StabilityMapSpec& spec);
+
+    /// Chooses the map Start runs: a shipped preset's name, a preset file, or "" for the map the
+    /// folder holds (its own stability.json). A preset is read and checked at once; returns
+    /// false and sets `error` when it is invalid (the previous choice stays). While the folder
+    /// is a default one, it follows the preset (defaultMapFolder()).
+    bool choosePreset(const QString& nameOrFile, QString* error = nullptr);
+    /// The current choice: a shipped preset's name, a file, or "" (the folder's map).
+    QString preset() const;
+    /// Follows `folder`: a map in it shows at once, and becomes what Start continues; a folder
+    /// holding something else is refused, the reason in statusLabel().
+    void setMapFolder(const QString& folder);
+
+    /// Starts (or continues) the map in the folder. Returns false and sets `error` when there is
+    /// nothing to start, the folder is refused, or a map is running.
+    bool start(QString* error = nullptr);
+    /// Asks the running map to stop (SIGINT): the cells done are kept.
+    void stop();
+    bool running() const;
+    /// The exit status of the last map process (nothing while none has ended).
+    std::optional<int> lastExitStatus() const { return lastExit_; }
+
+    /// Reads the folder now (what the timer does while the view is shown or a map runs).
+    void rescan();
+    /// How often the folder is read [ms].
+    void setPollInterval(int ms) { poll_.setInterval(ms); }
+
+    /// The axes of the heat map (across, up); equal axes are refused (nothing changes).
+    void setAxes(StabilityAxis x, StabilityAxis y);
+    StabilityAxis xAxis() const;
+    StabilityAxis yAxis() const;
+    /// What the heat map shows.
+    void setValue(StabilityValue value);
+    /// The finished cells drawn in square `cell` (column, row) of the heat map, as indices into
+    /// folder()->results, the one whose value is drawn (the smallest) first.
+    std::vector<int> resultsInSquare(QPoint cell) const;
+
+    QString mapFolder() const { return folder_; }
+    std::shared_ptr<const StabilityFolder> folder() const { return state_; }
+    HeatMapView* heatMap() const { return heatMap_; }
+    QLabel* details() const { return details_; }
+    QComboBox* presetBox() const { return preset_; }
+    QComboBox* xAxisBox() const { return xAxis_; }
+    QComboBox* yAxisBox() const { return yAxis_; }
+    QComboBox* valueBox() const { return value_; }
+    QProgressBar* progressBar() const { return bar_; }
+    QLabel* progressLabel() const { return progressText_; }
+    QPushButton* startButton() const { return startButton_; }
+    QPushButton* stopButton() const { return stopButton_; }
+    QLabel* statusLabel() const { return status_; }
+
+signals:
+    /// The folder was read and the heat map redrawn.
+    void progressChanged();
+    /// The map process ended with `exitStatus`.
+    void mapEnded(int exitStatus);
+
+protected:
+    void showEvent(QShowEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
+
+private:
+    void followFolder(const QString& folder, bool adoptItsMap);
+    bool setChoice(const QString& nameOrFile, QString* error, bool moveDefaultFolder);
+    void presetChosenInBox(int index);
+    void chooseFolderDialog();
+    void scanned(std::shared_ptr<const StabilityFolder> state);
+    void processEnded(int exitStatus);
+    void redraw();
+    void updateControls();
+    void updateProgressText();
+    void showSquare(QPoint cell);
+    void axisChosen(QComboBox* changed, QComboBox* other, int previous);
+
+    QString grainlab_;
+    QString choice_;              ///< what Start runs: a shipped name, a file, "" (the folder's)
+    StabilityMapSpec choiceSpec_; ///< the preset chosen (unset for "")
+    QString folder_;
+    bool folderIsDefault_ = false; ///< the folder follows the preset chosen
+    bool adoptFolderMap_ = false;  ///< the next scan that finds a map makes it the choice
+    std::shared_ptr<const StabilityFolder> state_;
+    std::uint64_t generation_ = 0; ///< bumped when the folder changes: stale scans drop
+    bool scanning_ = false;
+    bool rescanWanted_ = false;
+    QPoint selected_{-1, -1};   ///< the square clicked last
+    int lastX_ = 0, lastY_ = 3; ///< the axes' combo indices before the latest change
+
+    QProcess* process_ = nullptr;
+    QString logPath_;
+    std::optional<int> lastExit_;
+    bool stopping_ = false; ///< Stop was pressed for the running map
+    QElapsedTimer sinceStart_;
+    int finishedAtStart_ = 0;
+
+    QThread worker_;
+    QObject* workerContext_; ///< lives on worker_: the context of the scans posted there
+    QTimer poll_;
+
+    QComboBox* preset_;
+    QLabel* presetLabel_;
+    QLabel* folderLabel_;
+    QPushButton* folderButton_;
+    QPushButton* startButton_;
+    QPushButton* stopButton_;
+    QProgressBar* bar_;
+    QLabel* progressText_;
+    QComboBox* xAxis_;
+    QComboBox* yAxis_;
+    QComboBox* value_;
+    HeatMapView* heatMap_;
+    QLabel* details_;
+    QLabel* status_;
+};
+
+} // namespace grainlab::ui

@@ -1,0 +1,55 @@
+#pragma once
+// A widget showing one HeatMapPainter (heat_map_painter.h), filling the widget, with hover and
+// click on its cells and an outline on a chosen cell: the Stability view's map. It draws what it
+// is given and reports which cell is under the pointer; what a cell means is the caller's
+// business. GUI thread.
+
+#include <QImage>
+#include <QPoint>
+#include <QWidget>
+
+#include "grainlab/ui/heat_map_painter.h"
+
+namespace grainlab::ui {
+
+class HeatMapView : public QWidget {
+    Q_OBJECT
+public:
+    explicit HeatMapView(QWidget* parent = nullptr);
+
+    void setMap(HeatMapPainter map);
+    const HeatMapPainter& map() const { return map_; }
+    /// Where the map is painted (the whole widget), for HeatMapPainter::cellRect().
+    QRectF mapRect() const { return QRectF(rect()); }
+    /// The cell (column, row) at `position`, or (-1, -1) outside the grid.
+    QPoint cellAt(QPointF position) const;
+    /// The cell under the pointer, or (-1, -1).
+    QPoint hoveredCell() const { return hovered_; }
+    /// Outlines cell (column, row); (-1, -1): none.
+    void setSelectedCell(QPoint cell);
+    QPoint selectedCell() const { return selected_; }
+    /// The map as drawn at the widget's size.
+    QImage render() const;
+
+signals:
+    /// The pointer moved onto cell (column, row), or off the grid ((-1, -1)).
+    void cellHovered(QPoint cell);
+    /// Cell (column, row) was clicked with the left button.
+    void cellClicked(QPoint cell);
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+
+private:
+    void paintInto(QPainter& painter) const;
+    void setHovered(QPoint cell);
+
+    HeatMapPainter map_;
+    QPoint hovered_{-1, -1};
+    QPoint selected_{-1, -1};
+};
+
+} // namespace grainlab::ui
