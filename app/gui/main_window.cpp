@@ -14,7 +14,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
-#include <QProcess>
 #include <QProgressBar>
 #include <QSlider>
 #include <QSpinBox>
@@ -37,6 +36,7 @@
 #include "grainlab/ui/warning_label.h"
 #include "gui/duration_text.h"
 #include "gui/edited_experiment.h"
+#include "gui/report_job.h"
 #include "gui/study_window.h"
 #include "gui/window_run_folder.h"
 
@@ -87,6 +87,18 @@ MainWindow::MainWindow(RunMaker maker, QWidget* parent)
     }
     buildActions();
     buildMenus();
+    reportJob_ = new ReportJob(this);
+    connect(reportJob_, &ReportJob::finished, this, &MainWindow::reportEnded);
+    figureSetJob_ = new ReportJob(this);
+    connect(figureSetJob_, &ReportJob::finished, this,
+            [this](const QString& out, const QString& e) {
+                const QString folder = QFileInfo(out).path();
+                figureSetEnded(
+                    folder,
+                    e.isEmpty()
+                        ? e
+                        : tr("The figure set in %1 lacks the report's figures. %2").arg(folder, e));
+            });
 
     // Scene (with its display options) | charts over inspector and parameters.
     auto* sceneSide = new QWidget;
@@ -356,52 +368,47 @@ QString MainWindow::reportSource() const {
     return runFolder();
 }
 
-void MainWindow::writeReport() {
-    const QString source = reportSource();
-    if (source.isEmpty()) {
-        showError(tr("No run to report on: run an experiment or open a run file first."));
-        return;
+QString MainWindow::reportRefusal() const {
+    if (reportSource().isEmpty()) {
+        return tr("there is no run to report on: run an experiment or open a run file first");
     }
     const RunState state = controller_->status().state;
     if (!(viewingFile_ && runFile_) && (state == RunState::Running || state == RunState::Paused)) {
-        showError(tr("The run is still going: stop it (or let it finish) before its report is "
-                     "written from its run file."));
+        return tr("the run is still going, and its run file is read once it has stopped or "
+                  "finished");
+    }
+    return {};
+}
+
+QString MainWindow::grainlabExecutable() const {
+    return grainlab_.isEmpty() ? QCoreApplication::applicationFilePath() : grainlab_;
+}
+
+void MainWindow::writeReport() {
+    if (const QString why = reportRefusal(); !why.isEmpty()) {
+        showError(tr("No report now: %1.").arg(why));
         return;
     }
-    if (reportProcess_ && reportProcess_->state() != QProcess::NotRunning) {
+    const QString source = reportSource();
+    const QString out = QDir(source).filePath(QStringLiteral("report"));
+    if (!reportJob_->start(grainlabExecutable(), source, out)) {
         showError(tr("A report is being written already."));
         return;
     }
-    const QString out = QDir(source).filePath(QStringLiteral("report"));
-    if (!reportProcess_) {
-        reportProcess_ = new QProcess(this);
-        reportProcess_->setStandardInputFile(QProcess::nullDevice());
-        reportProcess_->setProcessChannelMode(QProcess::MergedChannels);
-    }
-    disconnect(reportProcess_, nullptr, this, nullptr);
-    connect(reportProcess_, &QProcess::finished, this, [this, out](int code, QProcess::ExitStatus) {
-        report_->setEnabled(true);
-        const QString html = QDir(out).filePath(QStringLiteral("report.html"));
-        if (code != 0) {
-            showError(tr("The report failed: %1")
-                          .arg(QString::fromLocal8Bit(reportProcess_->readAll()).trimmed()));
-            return;
-        }
-        statusBar()->showMessage(tr("Report written: %1").arg(html), 10000);
-        QDesktopServices::openUrl(QUrl::fromLocalFile(html));
-        emit reportWritten(html);
-    });
-    connect(reportProcess_, &QProcess::errorOccurred, this, [this](QProcess::ProcessError e) {
-        if (e == QProcess::FailedToStart) {
-            report_->setEnabled(true);
-            showError(tr("The report could not start: %1").arg(reportProcess_->errorString()));
-        }
-    });
     report_->setEnabled(false);
     statusBar()->showMessage(tr("Writing the report into %1…").arg(out));
-    reportProcess_->start(grainlab_.isEmpty() ? QCoreApplication::applicationFilePath() : grainlab_,
-                          {QStringLiteral("report"), source, QStringLiteral("--out"), out,
-                           QStringLiteral("--quiet")});
+}
+
+void MainWindow::reportEnded(const QString& out, const QString& error) {
+    report_->setEnabled(true);
+    if (!error.isEmpty()) {
+        showError(error);
+        return;
+    }
+    const QString html = QDir(out).filePath(QStringLiteral("report.html"));
+    statusBar()->showMessage(tr("Report written: %1").arg(html), 10000);
+    QDesktopServices::openUrl(QUrl::fromLocalFile(html));
+    emit reportWritten(html);
 }
 
 QString MainWindow::editedExperimentText(QString* error) const {
@@ -574,8 +581,41 @@ void MainWindow::refresh() {
 QStringList MainWindow::exportFigureSet(const QString& folder, QString* error) {
     const SnapshotPtr snapshot = scene_->snapshot();
     static const std::vector<SeriesTable> none;
-    return ui::exportFigureSet(folder, scene_, charts_, snapshot ? snapshot->series : none, {},
-                               error);
+    QString failure;
+    error = error ? error : &failure;
+    const QStringList files =
+        ui::exportFigureSet(folder, scene_, charts_, snapshot ? snapshot->series : none, {}, error);
+    if (!error->isEmpty()) {
+        return files;
+    }
+    // The report's figures are drawn from the run file by `grainlab report`, the code of
+    // Report…: a run still going has its run file open for writing, so they wait for its end.
+    QString why = reportRefusal();
+    const QString out = QDir(folder).filePath(QStringLiteral("report"));
+    if (why.isEmpty() && !figureSetJob_->start(grainlabExecutable(), reportSource(), out)) {
+        why = tr("the report's figures of an earlier figure set are still being written");
+    }
+    if (!why.isEmpty()) {
+        figureSetEnded(folder, tr("%1 files written to %2, without the report's figures: %3.")
+                                   .arg(files.size())
+                                   .arg(folder, why));
+        return files;
+    }
+    statusBar()->showMessage(tr("%1 files written to %2; writing the report's figures into %3…")
+                                 .arg(files.size())
+                                 .arg(folder, out));
+    return files;
+}
+
+void MainWindow::figureSetEnded(const QString& folder, const QString& note) {
+    if (note.isEmpty()) {
+        statusBar()->showMessage(
+            tr("Figure set written to %1 (the report's figures in report/figures/)").arg(folder),
+            10000);
+    } else {
+        showError(note);
+    }
+    emit figureSetWritten(folder, note);
 }
 
 void MainWindow::updateCharts(const SnapshotPtr& live) {
@@ -776,11 +816,9 @@ void MainWindow::exportFigureSetDialog() {
         return;
     }
     QString error;
-    const QStringList files = exportFigureSet(folder, &error);
+    exportFigureSet(folder, &error); // the status bar says how far it got
     if (!error.isEmpty()) {
         showError(error);
-    } else {
-        statusBar()->showMessage(tr("%1 files written to %2").arg(files.size()).arg(folder), 8000);
     }
 }
 

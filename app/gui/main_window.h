@@ -24,7 +24,6 @@
 
 class QAction;
 class QLabel;
-class QProcess;
 class QProgressBar;
 class QSpinBox;
 class QTabWidget;
@@ -35,6 +34,7 @@ namespace grainlab::ui {
 class ChartsPanel;
 class InspectorPanel;
 class ParametersPanel;
+class ReportJob;
 class SceneOptionsBar;
 class SceneView;
 class StudyWindow;
@@ -86,7 +86,13 @@ public:
     /// Takes the newest snapshot and status from the controller now (what the timer does).
     void refresh();
 
-    /// Exports (no dialogs): figure set, the scene, one chart, every series as CSV.
+    /// The figure set into `folder` (no dialog), in two parts. At once: scene.<fmt>, every
+    /// chart as <name>.<fmt> and each shown test's series as <test>.csv, returned (`error` set on
+    /// a failure, which ends the export). Then the report's figures of reportSource() with the
+    /// CSV of each, into `folder`/report/ (what Report… writes into the run folder) by a
+    /// `grainlab report` process the window does not wait for. figureSetWritten is emitted once
+    /// the set is complete; at once when the report's part is left out: no run to report on, or
+    /// the live run it would read is still running or paused (its run file is being written).
     QStringList exportFigureSet(const QString& folder, QString* error = nullptr);
 
     /// The run folder File > Report… reports on: the open run file's folder while the scene
@@ -104,6 +110,9 @@ public:
 signals:
     /// report.html has been written (and opened).
     void reportWritten(const QString& html);
+    /// The figure set into `folder` is complete. `note` is "" when the report's figures are in
+    /// it, else says why they are not (left out, or their report failed).
+    void figureSetWritten(const QString& folder, const QString& note);
 
 public:
     SimulationController& controller() { return *controller_; }
@@ -148,6 +157,15 @@ private:
     void exportCsvDialog();
     void exportFigureSetDialog();
     void showError(const QString& message);
+    /// Why no report can be written of reportSource() now ("" when one can): there is none, or
+    /// it is the live run, still running or paused.
+    QString reportRefusal() const;
+    /// The executable that writes reports: grainlab_, else this application.
+    QString grainlabExecutable() const;
+    /// The Report… process has ended: opens report.html, or says what went wrong.
+    void reportEnded(const QString& out, const QString& error);
+    /// The figure set into `folder` is complete: says so (or `note`) and emits figureSetWritten.
+    void figureSetEnded(const QString& folder, const QString& note);
     void openRunFileDialog();
     /// The live run's tables followed by the open run file's.
     void updateCharts(const SnapshotPtr& live);
@@ -184,7 +202,8 @@ private:
     QAction* stop_ = nullptr;
     QAction* saveAs_ = nullptr;
     QAction* report_ = nullptr;
-    QProcess* reportProcess_ = nullptr;
+    ReportJob* reportJob_ = nullptr;    ///< File > Report…
+    ReportJob* figureSetJob_ = nullptr; ///< the report's figures of the figure-set export
     QString grainlab_;
     QSpinBox* stepSize_ = nullptr;
     QLabel* stage_;

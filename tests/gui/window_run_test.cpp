@@ -189,6 +189,7 @@ TEST(WindowRun, SaveExperimentAsWritesWhatTheRunRecords) {
     click(w, w.startAction());
     ASSERT_TRUE(waitFor([&] { return w.controller().status().progress.step > 0; }));
     EXPECT_EQ(w.runFolder(), picked);
+    w.refresh(); // the label follows the status on the window's timer
     EXPECT_TRUE(w.runFolderLabel()->text().contains(QDir::toNativeSeparators(picked)));
     click(w, w.stopAction());
     ASSERT_TRUE(waitFor([&] { return state(w) == RunState::Idle; }));
