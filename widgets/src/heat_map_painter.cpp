@@ -10,6 +10,9 @@
 #include "grainlab/ui/colour_maps.h"
 
 namespace grainlab::ui {
+namespace {
+const QColor kMarkColour(200, 0, 0);
+} // namespace
 
 std::pair<double, double> HeatMapPainter::scale() const {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -18,6 +21,10 @@ std::pair<double, double> HeatMapPainter::scale() const {
             lo = std::min(lo, *v);
             hi = std::max(hi, *v);
         }
+    }
+    if (mark && std::isfinite(*mark)) {
+        lo = std::min(lo, *mark);
+        hi = std::max(hi, *mark);
     }
     if (min) {
         lo = *min;
@@ -84,11 +91,18 @@ void HeatMapPainter::paint(QPainter& painter, const QRectF& rect) const {
             painter.drawRect(c);
             // Dark text on the light end of the map, white on the dark end.
             painter.setPen(fill.lightnessF() > 0.55 ? Qt::black : Qt::white);
-            QString text = v && std::isfinite(*v) ? QString::number(*v, 'g', 3) : QString("-");
-            if (i < notes.size() && !notes[i].isEmpty()) {
-                text += "\n" + notes[i];
+            const QString note = i < notes.size() ? notes[i] : QString();
+            QString text = v && std::isfinite(*v) ? QString::number(*v, 'g', 3) : QString();
+            if (!note.isEmpty()) {
+                text += (text.isEmpty() ? "" : "\n") + note;
+            } else if (text.isEmpty()) {
+                text = "-";
             }
             painter.drawText(c, Qt::AlignCenter, text);
+            if (mark && v && *v < *mark) {
+                painter.setPen(QPen(kMarkColour, 3));
+                painter.drawRect(c.adjusted(3, 3, -3, -3));
+            }
         }
     }
     painter.setPen(Qt::black);
@@ -120,13 +134,27 @@ void HeatMapPainter::paint(QPainter& painter, const QRectF& rect) const {
     }
     painter.setPen(Qt::black);
     painter.drawRect(bar);
+    const auto barY = [&](double v) { return bar.bottom() - (v - lo) / (hi - lo) * bar.height(); };
+    const bool marked = mark && *mark >= lo && *mark <= hi;
     for (int k = 0; k <= 4; ++k) {
         const double t = k / 4.0;
         const double yPix = bar.bottom() - t * bar.height();
+        if (marked && std::fabs(yPix - barY(*mark)) < 14) {
+            continue; // the mark's label takes its place
+        }
         painter.drawLine(QPointF(bar.right(), yPix), QPointF(bar.right() + 4, yPix));
         painter.drawText(QRectF(bar.right() + 6, yPix - 8, 60, 16),
                          Qt::AlignLeft | Qt::AlignVCenter,
                          QString::number(lo + t * (hi - lo), 'g', 3));
+    }
+    if (marked) {
+        const double yPix = barY(*mark);
+        painter.setPen(QPen(kMarkColour, 2.5));
+        painter.drawLine(QPointF(bar.left() - 5, yPix), QPointF(bar.right() + 5, yPix));
+        painter.drawText(QRectF(bar.right() + 6, yPix - 8, 70, 16),
+                         Qt::AlignLeft | Qt::AlignVCenter,
+                         QString("%1 %2").arg(markLabel, QString::number(*mark, 'g', 3)));
+        painter.setPen(Qt::black);
     }
     painter.save();
     painter.translate(std::min(rect.right() - 8, bar.right() + 70), bar.center().y());

@@ -8,6 +8,7 @@
 #include <QObject>
 #include <QPainter>
 
+#include "grainlab/time_step.h"
 #include "grainlab/ui/figure_export.h"
 
 namespace grainlab::ui {
@@ -107,13 +108,17 @@ HeatMapPainter stabilityHeatMap(const StabilityMapSpec& spec,
     map.yTitle = axisTitle(y);
     const bool limit = value == StabilityValue::Limit;
     map.title = limit ? QObject::tr("Largest stable Δt (smallest over the other axes); below: the "
-                                    "engine's estimate")
+                                    "engine's estimate and its guard")
                       : QObject::tr("Measured limit / the engine's estimate (smallest over the "
-                                    "other axes)");
+                                    "other axes); red: the guard");
     map.valueTitle = limit ? QObject::tr("Δt limit [√(m_min/k_n)]") : QObject::tr("ratio [-]");
     const std::size_t n = std::size_t(map.xLabels.size()) * std::size_t(map.yLabels.size());
     map.values.assign(n, std::nullopt);
+    map.notes.resize(n);
     std::vector<std::optional<double>> estimate(n);
+    // A square none of whose cells was bracketed is stable up to the bracket's top: a bound,
+    // not a measured limit (grey, with the bound written).
+    std::vector<std::optional<double>> stableTo(n);
     for (const StabilityCellResult& r : results) {
         const int ix = indexOn(spec, x, r.cell), iy = indexOn(spec, y, r.cell);
         if (ix < 0 || iy < 0 || !(r.estimate > 0)) {
@@ -121,16 +126,26 @@ HeatMapPainter stabilityHeatMap(const StabilityMapSpec& spec,
         }
         const std::size_t i = std::size_t(iy) * std::size_t(map.xLabels.size()) + std::size_t(ix);
         const double v = limit ? r.limit.limit : r.limit.limit / r.estimate;
+        if (!r.limit.bracketed) {
+            stableTo[i] = stableTo[i] ? std::min(*stableTo[i], v) : v;
+            continue;
+        }
         map.values[i] = map.values[i] ? std::min(*map.values[i], v) : v;
         estimate[i] = estimate[i] ? std::min(*estimate[i], r.estimate) : r.estimate;
     }
-    if (limit) {
-        map.notes.resize(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (estimate[i]) {
-                map.notes[i] = QObject::tr("est. %1").arg(QString::number(*estimate[i], 'g', 3));
-            }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!map.values[i] && stableTo[i]) {
+            map.notes[i] = QObject::tr("stable to %1").arg(QString::number(*stableTo[i], 'g', 3));
+        } else if (limit && estimate[i]) {
+            // The engine's estimate and the largest step its guard accepts.
+            map.notes[i] = QObject::tr("est. %1 · guard %2")
+                               .arg(QString::number(*estimate[i], 'g', 3),
+                                    QString::number(kTimeStepMargin * *estimate[i], 'g', 3));
         }
+    }
+    if (!limit) {
+        map.mark = kTimeStepMargin; // in units of the estimate, the same in every square
+        map.markLabel = QObject::tr("guard");
     }
     return map;
 }

@@ -27,6 +27,10 @@ public:
     std::vector<std::optional<double>> values;
     std::vector<QString> notes;     ///< a second line per cell (empty: none); same layout
     std::optional<double> min, max; ///< the colour scale; unset: from the values
+    /// A value marked on the colour bar (a red line and its label), e.g. a guard; the scale
+    /// reaches down or up to it, and squares whose value is below it are outlined in red.
+    std::optional<double> mark;
+    QString markLabel;
 
     /// Draws the map filling `rect`.
     void paint(QPainter& painter, const QRectF& rect) const;
