@@ -66,6 +66,12 @@ TestStop testStopFromEnvironment() {
 int runExperimentCommand(const RunOptions& options) {
     const bool resume = !options.resume.empty();
     const std::string folder = resume ? options.resume : options.out;
+    // A new run's experiment is read and checked before its folder is created or locked: a
+    // refused experiment leaves nothing behind (reading writes nothing).
+    ExperimentConfig config;
+    if (!resume) {
+        config = readExperimentFile(options.experiment);
+    }
     // The folder is locked before anything in it is read or written; a refusal touches nothing.
     std::unique_ptr<RunFolderLock> lock;
     const fs::path runFilePath = fs::path(folder) / "run.h5";
@@ -97,7 +103,6 @@ int runExperimentCommand(const RunOptions& options) {
         fmt::print(stderr, "grainlab run: {}\n", e.what());
         return 2;
     }
-    ExperimentConfig config;
     ResumePoint point;
     if (resume) {
         const std::string runFile = runFilePath.string();
@@ -117,7 +122,6 @@ int runExperimentCommand(const RunOptions& options) {
             return 0;
         }
     } else {
-        config = readExperimentFile(options.experiment);
         if (options.force) {
             removeRunFiles(folder); // the old run's files, CSVs too, do not linger
         }
@@ -125,6 +129,9 @@ int runExperimentCommand(const RunOptions& options) {
     if (options.threads > 0) {
         config.parameters.threads = options.threads;
     }
+    // Past a file size limit (ulimit -f) a write then fails with EFBIG, which the run file
+    // reports and survives like a full disk, instead of SIGXFSZ killing the process.
+    std::signal(SIGXFSZ, SIG_IGN);
     RunOutputFolder output(folder, config.sourceText, resume);
     std::unique_ptr<ExperimentRunner> runner;
 
@@ -209,8 +216,10 @@ int runExperimentCommand(const RunOptions& options) {
             // (a study takes a finished record as a finished, readable run).
             output.close();
             saveCost(true);
-            bar.update(1.0, "done");
-            bar.finish();
+            if (!options.quiet) {
+                bar.update(1.0, "done");
+                bar.finish();
+            }
             fmt::print("grainlab run: finished; outputs in {}\n", folder);
         }
     } catch (const std::exception& e) {
@@ -222,14 +231,20 @@ int runExperimentCommand(const RunOptions& options) {
         }
         std::signal(SIGINT, previous);
         std::signal(SIGTERM, previousTerm);
-        const std::string& good = output.lastGoodCheckpoint();
-        fmt::print(stderr,
-                   "grainlab run: error: {}\nThe run file {} keeps {} and every series recorded "
-                   "so far. Once the cause is removed (e.g. space freed), continue with: grainlab "
-                   "run --resume {}\n",
-                   e.what(), output.runFilePath(),
-                   good.empty() ? std::string("no checkpoint yet") : "its last good " + good,
-                   folder);
+        const std::string kept = output.lastCheckpoint();
+        if (kept.empty()) {
+            fmt::print(stderr,
+                       "grainlab run: error: {}\nThe run file {} holds no checkpoint to continue "
+                       "from. Once the cause is removed (e.g. space freed), run the experiment "
+                       "again with --force\n",
+                       e.what(), output.runFilePath());
+        } else {
+            fmt::print(stderr,
+                       "grainlab run: error: {}\nThe run file {} keeps its last good checkpoint "
+                       "{} and every series recorded up to it. Once the cause is removed (e.g. "
+                       "space freed), continue with: grainlab run --resume {}\n",
+                       e.what(), output.runFilePath(), kept, folder);
+        }
         return 1;
     }
     std::signal(SIGINT, previous);

@@ -71,32 +71,12 @@ void removeRunFiles(const std::string& folder) {
     }
 }
 
-namespace {
-
-std::string checkpointInWords(const std::string& name, const std::string& test, double eps1,
-                              std::int64_t step) {
-    return fmt::format("checkpoint {} (test {}, eps1 = {:.4f}, step {})", name, test, eps1, step);
-}
-
-} // namespace
-
 RunOutputFolder::RunOutputFolder(const std::string& folder, const std::string& experimentText,
                                  bool resume)
     : folder_(folder) {
     fs::create_directories(folder_);
-    if (resume) {
-        for (const CheckpointInfo& info : listCheckpointInfo(runFilePath())) {
-            if (!info.peak) {
-                lastGood_ = checkpointInWords(info.name, info.test, info.axialStrain, info.step);
-            }
-        }
-    }
     runFile_ = std::make_unique<RunFile>(runFilePath(), experimentText,
                                          resume ? RunFile::Mode::Resume : RunFile::Mode::Create);
-}
-
-const std::string& RunOutputFolder::lastGoodCheckpoint() const {
-    return lastGood_;
 }
 
 void RunOutputFolder::warnings(const std::vector<RunWarning>& all) {
@@ -105,11 +85,19 @@ void RunOutputFolder::warnings(const std::vector<RunWarning>& all) {
 
 void RunOutputFolder::close() {
     csv_.clear();
-    runFile_.reset();
+    if (runFile_) {
+        lastCheckpoint_ = runFile_->lastCheckpoint();
+        runFile_->close(); // throws if the last flush fails (the file keeps its last checkpoint)
+        runFile_.reset();
+    }
 }
 
 std::string RunOutputFolder::runFilePath() const {
     return (fs::path(folder_) / "run.h5").string();
+}
+
+std::string RunOutputFolder::lastCheckpoint() const {
+    return runFile_ ? runFile_->lastCheckpoint() : lastCheckpoint_;
 }
 
 std::string RunOutputFolder::seriesPath(const std::string& test) const {
@@ -146,10 +134,6 @@ void RunOutputFolder::voidCells(const std::string& name, const VoidCellSet& cell
 
 void RunOutputFolder::checkpoint(const CheckpointData& data) {
     runFile_->checkpoint(data);
-    if (!data.identity.peak) { // written whole: the run can continue from it
-        lastGood_ = checkpointInWords(data.name, data.identity.test, data.identity.axialStrain,
-                                      data.identity.step);
-    }
 }
 
 ResumePoint RunOutputFolder::readResumePoint(const std::string& folder) {

@@ -52,9 +52,8 @@ public:
     void warnings(const std::vector<RunWarning>& all) override;
 
     std::string runFilePath() const;
-    /// The last checkpoint a run can continue from (not a peak checkpoint) that is complete in
-    /// the run file, in words: its name, test, eps1 and step; "" before the first.
-    const std::string& lastGoodCheckpoint() const;
+    /// The run file's last complete checkpoint ("" before the first: nothing to resume).
+    std::string lastCheckpoint() const;
     std::string seriesPath(const std::string& test) const;
     /// Closes the run file and the CSV files (a closed run file is complete on disk). Nothing
     /// may be written after it.
@@ -67,7 +66,7 @@ public:
 private:
     std::string folder_;
     std::unique_ptr<RunFile> runFile_;
-    std::string lastGood_;
+    std::string lastCheckpoint_; ///< of the run file once closed
     std::map<std::string, std::unique_ptr<CsvSeriesAppender>> csv_;
 };
 

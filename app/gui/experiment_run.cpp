@@ -48,7 +48,7 @@ public:
     void keepRecordSnapshots(SnapshotHistory* history) override { history_ = history; }
     std::string runFolder() const override { return folderPath_; }
     std::string lastGoodCheckpoint() const override {
-        return folder_ ? folder_->lastGoodCheckpoint() : std::string();
+        return folder_ ? folder_->lastCheckpoint() : std::string();
     }
     void interrupt() override {
         if (folder_ && !runner_.finished()) {

@@ -30,8 +30,8 @@ public:
     virtual void keepRecordSnapshots(SnapshotHistory* history) { (void)history; }
     /// The run folder this run writes (run.h5, <test>/series.csv), or "" when it writes none.
     virtual std::string runFolder() const { return {}; }
-    /// The last checkpoint of the run folder a run can continue from, in words (see
-    /// RunOutputFolder::lastGoodCheckpoint), or "" when there is none or no folder.
+    /// The name of the last checkpoint of the run folder a run can continue from (see
+    /// RunOutputFolder::lastCheckpoint), or "" when there is none or no folder.
     virtual std::string lastGoodCheckpoint() const { return {}; }
     /// The run ends before its last step (Stop, the window closes): a recorded run writes an
     /// "interrupted" checkpoint, so that `grainlab run --resume` continues it. May throw.

@@ -284,10 +284,11 @@ void SimulationController::workerLoop() {
                 // As `grainlab run` says it: what the folder keeps, and how to continue.
                 const std::string good = run_->lastGoodCheckpoint();
                 message += fmt::format(
-                    ". The run folder {} keeps {} and every series recorded so far; once the "
+                    ". The run folder {} keeps {} and every series recorded up to it; once the "
                     "cause is removed, continue with: grainlab run --resume {}",
                     run_->runFolder(),
-                    good.empty() ? std::string("no checkpoint yet") : "its last good " + good,
+                    good.empty() ? std::string("no checkpoint yet")
+                                 : "its last good checkpoint " + good,
                     run_->runFolder());
             }
             run_.reset();

@@ -358,7 +358,7 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
     p.friction = config.compaction.friction;
     p.servo.maxStrainRate = config.compaction.maxStrainRate;
 
-    // The shapes the file implies, and the time step against their stable limit (SPEC §3.7).
+    // The shapes the file implies, and the time step against their stable limit (docs/physics.md).
     // Each derived quantity must be finite: a width is blamed when its disk is already out of
     // range, the shape's ratio when only the oval is, the density when only the masses are.
     std::vector<OvalShape> shapes;

@@ -62,7 +62,7 @@ void Simulation::updateServo() {
         if (modulus > 0.0) {
             // Over one servo interval the stress moves by at most the fraction g of its error
             // (the affine estimate over-predicts the true modulus); the integral term removes
-            // the lag of a purely proportional servo during steady loading (SPEC §3.5).
+            // the lag of a purely proportional servo during steady loading.
             const double proportional = servo.gain * error / (modulus * dtServo);
             double& integral = s_.servoIntegral[axis];
             integral = std::clamp(integral + servo.integralGain * proportional, -cap, cap);

@@ -7,22 +7,16 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
-#include <limits>
 #include <map>
 #include <stdexcept>
 
-#include <fcntl.h>
-#include <sys/resource.h>
-#include <sys/stat.h>
-#include <sys/statvfs.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <functional>
 
 #include <fmt/format.h>
 
+#include "run_file_driver.h"
 #include "run_file_io.h"
+#include "run_file_room.h"
 
 #ifndef GRAINLAB_VERSION
 #define GRAINLAB_VERSION "unknown"
@@ -192,63 +186,14 @@ struct RunFile::Impl {
                          const StageIdentity* identity = nullptr,
                          const std::function<void(H5::Group&)>& fill = {});
     bool failed = false; ///< a write failed: nothing more is written, the file is left as is
+    /// The last complete checkpoint that a resumed run continues from (not a peak checkpoint),
+    /// as of the last flush.
+    std::string lastCheckpoint;
 
-    /// Refuses a write of about `bytes` that the file system (or the file size limit) has no
-    /// room for, before anything of it is written: a write that fails half-way can leave HDF5's
-    /// structures half-updated, and the file unreadable.
-    int reserveFd = -1; ///< run.h5 opened once more, to reserve disk blocks before a write
+    int reserveFd = -1; ///< run.h5 opened once more, to allocate disk blocks before writes
 
-    void ensureRoom(std::uint64_t bytes, const std::string& what) {
-        constexpr std::uint64_t kMargin = std::uint64_t(1) << 19; // HDF5 metadata, new chunks
-        const std::uint64_t needed = bytes + bytes / 4 + kMargin;
-        std::uint64_t room = std::numeric_limits<std::uint64_t>::max();
-        std::string where;
-        struct statvfs fsinfo {};
-        const std::string folder = std::filesystem::path(path).parent_path().string();
-        if (::statvfs(folder.empty() ? "." : folder.c_str(), &fsinfo) == 0) {
-            room = std::uint64_t(fsinfo.f_bavail) * fsinfo.f_frsize;
-            where = "free on its file system";
-        }
-        struct rlimit limit {};
-        if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
-            std::error_code error;
-            const std::uint64_t size = std::filesystem::file_size(path, error);
-            std::uint64_t end = error ? 0 : size;
-            haddr_t eoa = 0;
-            if (H5Fget_filesize(file.getId(), reinterpret_cast<hsize_t*>(&eoa)) >= 0) {
-                end = std::max<std::uint64_t>(end, eoa);
-            }
-            const std::uint64_t left = limit.rlim_cur > end ? limit.rlim_cur - end : 0;
-            if (left < room) {
-                room = left;
-                where = "left under the file size limit";
-            }
-        }
-        // Reserve the blocks past the file's end (its size unchanged): another program filling
-        // the disk between this check and the write can then not make the write fail half-way.
-        // A file system without fallocate() gets the statvfs() check only.
-        if (room >= needed) {
-            if (reserveFd < 0) {
-                reserveFd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
-            }
-            std::error_code error;
-            const std::uint64_t size = std::filesystem::file_size(path, error);
-            if (reserveFd >= 0 && !error &&
-                ::fallocate(reserveFd, FALLOC_FL_KEEP_SIZE, off_t(size), off_t(needed)) != 0 &&
-                (errno == ENOSPC || errno == EDQUOT)) {
-                room = 0;
-                where = "that the file system could reserve";
-            }
-        }
-        if (room < needed) {
-            throw std::runtime_error(fmt::format(
-                "{}: no room to write {} (about {:.1f} MB needed, {:.1f} MB {}); nothing of it "
-                "was written and the file keeps everything written before",
-                path, what, needed / 1e6, room / 1e6, where));
-        }
-    }
-
-    /// Runs a write: refused once a write has failed, and marks the file failed if it throws.
+    /// Runs a write: refused once a write has failed, and fences the file if the library fails
+    /// in it (values refused before anything was written leave the file usable).
     template <class F>
     void write(std::uint64_t bytes, const std::string& what, F&& f) {
         if (failed) {
@@ -258,17 +203,35 @@ struct RunFile::Impl {
         // GRAINLAB_TEST_NO_ROOM_CHECK=1 (tests only): let the write fail in HDF5 itself.
         static const bool check = std::getenv("GRAINLAB_TEST_NO_ROOM_CHECK") == nullptr;
         if (check) {
-            ensureRoom(bytes, what);
+            ensureRoom(path, file.getId(), reserveFd, bytes, what);
         }
         try {
             f();
-        } catch (const hdf5io::Hdf5Error&) {
-            failed = true; // the library failed half-way (a full disk); values refused before
-            throw;         // anything was written leave the file usable
+        } catch (const hdf5io::Hdf5Error& e) {
+            fence();
+            throw hdf5io::Hdf5Error(fmt::format("{}; {}", e.what(), keptText()));
         }
     }
 
+    /// What the file holds after a failed write, for its message.
+    std::string keptText() const {
+        return lastCheckpoint.empty()
+                   ? std::string("nothing of this write reached the file, which holds no "
+                                 "checkpoint yet")
+                   : fmt::format("nothing of this write reached the file, which keeps its last "
+                                 "complete checkpoint {} (a resumed run continues from it)",
+                                 lastCheckpoint);
+    }
+
+    /// Marks the file failed; from now on HDF5's writes to it stay in memory (run_file_driver.h).
+    void fence() {
+        failed = true;
+        (void)fenceRunFile(file.getId());
+    }
+
+    /// A flush that cannot fail half-way for room (run_file_room.h).
     void flushNow() {
+        allocateToEnd(path, file.getId(), reserveFd);
         file.flush(H5F_SCOPE_GLOBAL);
         lastFlush = std::chrono::steady_clock::now();
     }
@@ -277,6 +240,7 @@ struct RunFile::Impl {
 void RunFile::Impl::createSeries(H5::Group& test, const SeriesTable& table, OpenSeries& out) {
     if (test.nameExists("series")) {
         test.unlink("series");
+        flushNow(); // before new chunks can take the freed space the file on disk still uses
     }
     out = OpenSeries{};
     out.group = test.createGroup("series");
@@ -293,18 +257,20 @@ void RunFile::Impl::createSeries(H5::Group& test, const SeriesTable& table, Open
     chunked.setChunk(1, &chunk);
     chunked.setFletcher32();
     for (const auto& c : table.columns) {
-        H5::DataSet ds = out.group.createDataSet(c.name, H5Types<double>::file(), space, chunked);
+        H5::DataSet ds = out.group.createDataSet(c.name, H5Types<double>::file(), space, chunked,
+                                                 writeThrough());
         writeAttribute(ds, "unit", c.unit.empty() ? std::string("-") : c.unit);
         writeHash(ds, nullptr, 0);
         out.values.push_back(ds);
     }
-    out.stage = out.group.createDataSet("stage", fixedStringType(kStageTextSize), space, chunked);
+    out.stage = out.group.createDataSet("stage", fixedStringType(kStageTextSize), space, chunked,
+                                        writeThrough());
     writeHash(out.stage, nullptr, 0);
-    out.stageKind =
-        out.group.createDataSet("stage_kind", fixedStringType(kStageKindSize), space, chunked);
+    out.stageKind = out.group.createDataSet("stage_kind", fixedStringType(kStageKindSize), space,
+                                            chunked, writeThrough());
     writeHash(out.stageKind, nullptr, 0);
-    out.stagePressure =
-        out.group.createDataSet("stage_pressure", H5Types<double>::file(), space, chunked);
+    out.stagePressure = out.group.createDataSet("stage_pressure", H5Types<double>::file(), space,
+                                                chunked, writeThrough());
     writeAttribute(out.stagePressure, "unit", std::string("Pa"));
     writeHash(out.stagePressure, nullptr, 0);
 }
@@ -320,13 +286,13 @@ RunFile::Impl::OpenSeries& RunFile::Impl::seriesFor(const SeriesTable& table) {
             H5::Group test = tests.openGroup(link);
             s.group = test.openGroup("series");
             for (const auto& name : readStringListAttribute(s.group, "columns")) {
-                H5::DataSet ds = s.group.openDataSet(name);
+                H5::DataSet ds = s.group.openDataSet(name, writeThrough());
                 s.columns.push_back({name, readStringAttribute(ds, "unit")});
                 s.values.push_back(ds);
             }
-            s.stage = s.group.openDataSet("stage");
-            s.stageKind = s.group.openDataSet("stage_kind");
-            s.stagePressure = s.group.openDataSet("stage_pressure");
+            s.stage = s.group.openDataSet("stage", writeThrough());
+            s.stageKind = s.group.openDataSet("stage_kind", writeThrough());
+            s.stagePressure = s.group.openDataSet("stage_pressure", writeThrough());
             s.rows = static_cast<std::size_t>(s.stage.getSpace().getSimpleExtentNpoints());
         } else {
             H5::Group test = openOrCreateGroup(tests, link);
@@ -352,6 +318,23 @@ RunFile::Impl::OpenSeries& RunFile::Impl::seriesFor(const SeriesTable& table) {
 RunFile::RunFile(const std::string& path, const std::string& experimentText, Mode mode)
     : impl_(std::make_unique<Impl>()) {
     impl_->path = path;
+    try {
+        open(experimentText, mode);
+    } catch (const hdf5io::Hdf5Error&) {
+        if (H5Iis_valid(impl_->file.getId()) > 0) {
+            impl_->fence(); // closing the file as this object goes writes nothing more to it
+        }
+        if (mode == Mode::Create) {
+            // It holds nothing yet; gone, it leaves nothing to refuse or to resume.
+            std::error_code ignored;
+            std::filesystem::remove(path, ignored);
+        }
+        throw;
+    }
+}
+
+void RunFile::open(const std::string& experimentText, Mode mode) {
+    const std::string& path = impl_->path;
     guarded(path, mode == Mode::Create ? "creating the run file" : "opening the run file", [&] {
         if (mode == Mode::Create) {
             impl_->file = openFile(path, H5F_ACC_TRUNC, checksummedAccess(), "creating it");
@@ -379,38 +362,59 @@ RunFile::RunFile(const std::string& path, const std::string& experimentText, Mod
             for (const char* g : {"tests", "checkpoints", "samples"}) {
                 openOrCreateGroup(root, g);
             }
+            const H5::Group checkpoints = root.openGroup("checkpoints");
+            for (const auto& link : childrenInWriteOrder(checkpoints)) {
+                const H5::Group g = checkpoints.openGroup(link);
+                if (!g.attrExists("peak") || readAttribute<std::int32_t>(g, "peak") == 0) {
+                    impl_->lastCheckpoint = readStringAttribute(g, "name");
+                }
+            }
             impl_->flushNow();
         }
     });
 }
 
-RunFile::~RunFile() {
-    const int reserveFd = impl_->reserveFd;
-    if (impl_->failed) {
-        // After a failed write HDF5's cache holds entries it cannot write; closing would try
-        // again (and has crashed). The file stays as the last successful flush left it.
-        (void)impl_.release();
-    } else {
-        try {
-            impl_->series.clear();
-            impl_->flushNow();
-            impl_->file.close();
-        } catch (...) {
-            // A destructor must not throw; the last explicit flush stands.
-        }
+void RunFile::close() {
+    if (H5Iis_valid(impl_->file.getId()) <= 0) {
+        return; // closed already
     }
-    if (reserveFd >= 0) {
-        // Give back the blocks reserved past the end of the file (its size unchanged).
-        struct stat info {};
-        if (::fstat(reserveFd, &info) == 0) {
-            (void)::ftruncate(reserveFd, info.st_size);
-        }
-        ::close(reserveFd);
+    if (!impl_->failed) {
+        // Everything on disk before anything is closed: a dataset's close writes its cached
+        // chunks, and after the flush it has none.
+        impl_->write(0, "the end of the file",
+                     [&] { guarded(impl_->path, "closing", [&] { impl_->flushNow(); }); });
+    }
+    closeHandles();
+}
+
+void RunFile::closeHandles() {
+    // After a good flush the closes below write nothing new; after a failure the file is fenced
+    // and whatever they write goes nowhere.
+    try {
+        impl_->series.clear();
+        impl_->file.close();
+    } catch (const H5::Exception&) {
+        // Not reachable after a flush or a fence; the file on disk stands as it was left.
+    }
+    releaseReserve(impl_->reserveFd);
+}
+
+RunFile::~RunFile() {
+    try {
+        close();
+    } catch (const std::exception&) {
+        // A destructor must not throw: the failed flush fenced the file, which keeps its last
+        // complete flush. close() says so to a caller that closes explicitly.
+        closeHandles();
     }
 }
 
 const std::string& RunFile::path() const {
     return impl_->path;
+}
+
+const std::string& RunFile::lastCheckpoint() const {
+    return impl_->lastCheckpoint;
 }
 
 void RunFile::flush() {
@@ -445,6 +449,7 @@ void RunFile::recordNow(const SeriesTable& table) {
         // Rows [from, n) are written; fewer rows than the file means the run was rewound.
         // (rewound: all of them, so that the file mirrors the table, checksums included).
         const std::size_t from = n > s.rows ? s.rows : 0;
+        const bool rewound = n < s.rows;
         for (std::size_t k = from; k < n; ++k) {
             for (std::size_t c = 0; c < table.columns.size(); ++c) {
                 if (!std::isfinite(table.rows[k][c])) {
@@ -522,7 +527,9 @@ void RunFile::recordNow(const SeriesTable& table) {
         writeHash(s.stagePressure, pressures.data(), pressures.size() * sizeof(double));
         const std::chrono::duration<double> sinceFlush =
             std::chrono::steady_clock::now() - impl_->lastFlush;
-        if (sinceFlush.count() >= kRecordFlushSeconds) {
+        // A rewound series is flushed at once: its cut freed chunks that the file on disk
+        // still used, and the next rows may be written into them.
+        if (rewound || sinceFlush.count() >= kRecordFlushSeconds) {
             impl_->flushNow();
         }
     });
@@ -565,8 +572,10 @@ void RunFile::Impl::writeStateGroup(const std::string& parentName, const std::st
             fill(g);
         }
         writeAttribute(g, "index", nextIndex(parent));
+    } catch (const H5::Exception&) {
+        throw; // the library failed: nothing more is asked of it (the file is fenced)
     } catch (...) {
-        parent.unlink(scratch);
+        parent.unlink(scratch); // a value refused before it was written
         throw;
     }
     // The complete group replaces an older one of the same name only now.
@@ -575,6 +584,9 @@ void RunFile::Impl::writeStateGroup(const std::string& parentName, const std::st
     }
     parent.moveLink(scratch, link);
     flushNow();
+    if (parentName == "checkpoints" && !(identity && identity->peak)) {
+        lastCheckpoint = name;
+    }
 }
 
 namespace {

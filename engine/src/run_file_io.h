@@ -21,6 +21,7 @@
 #include "grainlab/run_warning.h"
 #include "grainlab/simulation_state.h"
 #include "grainlab/void_cells.h"
+#include "run_file_driver.h"
 
 namespace grainlab::hdf5io {
 
@@ -79,16 +80,24 @@ inline std::string linkName(const std::string& name) {
     return out;
 }
 
-/// The messages of the HDF5 error stack, innermost last, e.g. "unable to lock file, errno =
-/// 11" or "data error detected by Fletcher32 checksum".
-inline std::string hdf5Causes() {
+/// The messages of an HDF5 error stack, innermost last, e.g. "unable to lock file, errno =
+/// 11" or "data error detected by Fletcher32 checksum". A failed system call is cut to its
+/// call and cause ("file write failed: File too large"), not its buffer addresses.
+inline std::string hdf5Causes(hid_t stack = H5E_DEFAULT) {
     std::vector<std::string> messages;
     H5Ewalk2(
-        H5E_DEFAULT, H5E_WALK_UPWARD,
+        stack, H5E_WALK_UPWARD,
         [](unsigned, const H5E_error2_t* e, void* data) -> herr_t {
             auto* out = static_cast<std::vector<std::string>*>(data);
             if (e->desc && *e->desc && out->size() < 8) {
-                out->emplace_back(e->desc);
+                std::string m = e->desc;
+                const std::size_t cause = m.find("error message = '");
+                if (cause != std::string::npos) {
+                    const std::size_t begin = cause + 17, end = m.find('\'', begin);
+                    const std::size_t call = std::min(m.find(':'), m.find(", errno"));
+                    m = m.substr(0, call) + ": " + m.substr(begin, end - begin);
+                }
+                out->push_back(std::move(m));
             }
             return 0;
         },
@@ -100,6 +109,32 @@ inline std::string hdf5Causes() {
         }
     }
     return out;
+}
+
+/// The causes of the first HDF5 call that failed since clearHdf5Causes(). The error stack
+/// itself does not keep them: the C++ wrapper's destructors (H5Dclose, H5Gclose) run before an
+/// exception reaches its handler, and every call clears the stack.
+inline std::string& firstHdf5Causes() {
+    static std::string causes;
+    return causes;
+}
+
+inline void clearHdf5Causes() {
+    firstHdf5Causes().clear();
+}
+
+/// In place of the library's printing of errors (H5::Exception::dontPrint): records the
+/// causes of a failing call, printing nothing.
+inline void recordHdf5Causes() {
+    H5Eset_auto2(
+        H5E_DEFAULT,
+        [](hid_t stack, void*) -> herr_t {
+            if (firstHdf5Causes().empty()) {
+                firstHdf5Causes() = hdf5Causes(stack);
+            }
+            return 0;
+        },
+        nullptr);
 }
 
 /// Turns an HDF5 library exception into std::runtime_error with the file, the operation and
@@ -115,7 +150,12 @@ public:
     std::string verdict;
     if (detail.find("checksum") != std::string::npos) {
         verdict = "the file is damaged (a checksum does not match); ";
-    } else if (detail.find("lock") != std::string::npos) {
+    } else if (detail.find("File too large") != std::string::npos) {
+        verdict = "the file size limit is reached (a write failed); ";
+    } else if (detail.find("No space left") != std::string::npos ||
+               detail.find("Disk quota") != std::string::npos) {
+        verdict = "the disk is full (a write failed); ";
+    } else if (detail.find("unable to lock file") != std::string::npos) {
         verdict = "the file is in use by another program (it cannot be locked); ";
     } else if (detail.find("Permission denied") != std::string::npos) {
         verdict = "no permission to open the file this way; ";
@@ -131,7 +171,10 @@ public:
 
 [[noreturn]] inline void rethrowHdf5(const std::string& path, const std::string& what,
                                      const H5::Exception& e) {
-    const std::string causes = hdf5Causes();
+    std::string causes = hdf5Causes();
+    if (causes.empty()) {
+        causes = firstHdf5Causes();
+    }
     throwHdf5(path, what, causes.empty() ? e.getDetailMsg() : causes);
 }
 
@@ -140,14 +183,15 @@ public:
 /// C++ wrapper clears it.
 inline H5::H5File openFile(const std::string& path, unsigned flags,
                            const H5::FileAccPropList& access, const std::string& what) {
-    H5::Exception::dontPrint();
+    recordHdf5Causes();
     // Small chunk-index nodes: most datasets are a single chunk, and the default node (room
     // for 64 chunks, ~2.3 KB) per dataset of every checkpoint doubled the file.
     H5::FileCreatPropList create;
     create.setIstorek(2);
+    const H5::FileAccPropList driven = withRunFileDriver(access);
     const hid_t id = flags == H5F_ACC_TRUNC
-                         ? H5Fcreate(path.c_str(), flags, create.getId(), access.getId())
-                         : H5Fopen(path.c_str(), flags, access.getId());
+                         ? H5Fcreate(path.c_str(), flags, create.getId(), driven.getId())
+                         : H5Fopen(path.c_str(), flags, driven.getId());
     if (id < 0) {
         const std::string causes = hdf5Causes();
         H5Eclear2(H5E_DEFAULT);
@@ -160,7 +204,8 @@ inline H5::H5File openFile(const std::string& path, unsigned flags,
 
 template <class F>
 auto guarded(const std::string& path, const std::string& what, F&& f) {
-    H5::Exception::dontPrint();
+    recordHdf5Causes();
+    clearHdf5Causes();
     try {
         return f();
     } catch (const H5::Exception& e) {
@@ -194,6 +239,15 @@ inline H5::DSetCreatPropList checksummedLayout(hsize_t n) {
     const hsize_t chunk = std::clamp<hsize_t>(n, 1, 65536);
     p.setChunk(1, &chunk);
     p.setFletcher32();
+    return p;
+}
+
+/// Access to a new dataset without a chunk cache: H5Dwrite writes each chunk at once, so a
+/// write that fails (a full disk) fails in H5Dwrite and throws, instead of in the H5Dclose of
+/// a destructor, which can only print and let the writer carry on.
+inline H5::DSetAccPropList writeThrough() {
+    H5::DSetAccPropList p;
+    p.setChunkCache(0, 0, 1.0);
     return p;
 }
 
@@ -379,7 +433,8 @@ void writeArray(H5::Group& group, const std::string& name, const T* data, std::s
     // An empty dataset is extendible (a chunk may not exceed fixed dimensions of 0).
     const H5::DataSpace space =
         n > 0 ? H5::DataSpace(1, &dims) : H5::DataSpace(1, &dims, &unlimited);
-    H5::DataSet ds = group.createDataSet(name, H5Types<T>::file(), space, checksummedLayout(n));
+    H5::DataSet ds =
+        group.createDataSet(name, H5Types<T>::file(), space, checksummedLayout(n), writeThrough());
     if (n > 0) {
         ds.write(data, H5Types<T>::memory());
     }
@@ -449,7 +504,8 @@ std::array<T, N> readFixed(const H5::Group& group, const std::string& name) {
 inline void writeStringDataset(H5::Group& group, const std::string& name, const std::string& text) {
     const H5::StrType t = fixedStringType(text.size());
     const hsize_t one = 1;
-    H5::DataSet ds = group.createDataSet(name, t, H5::DataSpace(1, &one), checksummedLayout(1));
+    H5::DataSet ds =
+        group.createDataSet(name, t, H5::DataSpace(1, &one), checksummedLayout(1), writeThrough());
     std::vector<char> buffer(t.getSize(), '\0');
     std::copy(text.begin(), text.end(), buffer.begin());
     ds.write(buffer.data(), t);
@@ -486,7 +542,7 @@ inline void writeStringArray(H5::Group& group, const std::string& name,
     const hsize_t n = texts.size(), unlimited = H5S_UNLIMITED;
     // An empty dataset is extendible (a chunk may not exceed fixed dimensions of 0).
     const H5::DataSpace space = n > 0 ? H5::DataSpace(1, &n) : H5::DataSpace(1, &n, &unlimited);
-    H5::DataSet ds = group.createDataSet(name, t, space, checksummedLayout(n));
+    H5::DataSet ds = group.createDataSet(name, t, space, checksummedLayout(n), writeThrough());
     std::vector<char> buffer(size * texts.size(), '\0');
     for (std::size_t k = 0; k < texts.size(); ++k) {
         std::copy(texts[k].begin(), texts[k].end(), buffer.begin() + k * size);
@@ -537,7 +593,8 @@ void writeMatrix(H5::Group& group, const std::string& name, const std::vector<T>
     H5::DSetCreatPropList layout;
     layout.setChunk(2, chunk);
     layout.setFletcher32();
-    H5::DataSet ds = group.createDataSet(name, H5Types<T>::file(), H5::DataSpace(2, dims), layout);
+    H5::DataSet ds = group.createDataSet(name, H5Types<T>::file(), H5::DataSpace(2, dims), layout,
+                                         writeThrough());
     if (!values.empty()) {
         ds.write(values.data(), H5Types<T>::memory());
     }

@@ -210,7 +210,7 @@ void Simulation::derive() {
         inertia_[i] = p.density * s.polarMoment;
         halfWidth_[i] = s.halfWidth;
         halfHeight_[i] = s.halfHeight;
-        // Fraction beta of the critical damping of one grain on one normal spring (SPEC §3.6).
+        // Fraction beta of the critical damping of one grain on one normal spring, 2 sqrt(k_n m).
         dampTrans_[i] = 2.0 * std::sqrt(p.normalStiffness * mass_[i]);
         dampRot_[i] = 2.0 * std::sqrt(p.normalStiffness * s.halfWidth * s.halfWidth * inertia_[i]);
         sinCos(s_.grains.theta[i], sinTheta_[i], cosTheta_[i]);

@@ -29,7 +29,9 @@ namespace fs = std::filesystem;
 
 using test::readText;
 
-fs::path freshFolder(const std::string& name) { return test::freshFolder("folder", name); }
+fs::path freshFolder(const std::string& name) {
+    return test::freshFolder("folder", name);
+}
 
 /// 120 grains, one pressure, a short shear: a couple of seconds.
 fs::path writeTinyExperiment(const fs::path& folder, double targetStrain = 0.002) {
@@ -76,6 +78,30 @@ std::map<std::string, std::string> folderBytes(const fs::path& folder) {
         }
     }
     return out;
+}
+
+TEST(RunFolder, ARefusedExperimentCreatesNoFolder) {
+    const fs::path base = freshFolder("refused");
+    const fs::path bad = base / "bad.json";
+    std::ofstream(bad) << R"({"name": 3})";
+    const fs::path out = base / "new";
+    const Result r = runGrainlab(fmt::format("run {} --out {}", bad.string(), out.string()));
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find(bad.string()), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("name"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out)) << "a refused experiment left " << out << " behind";
+    fs::remove_all(base);
+}
+
+TEST(RunFolder, QuietPrintsOnlyTheLastLine) {
+    const fs::path base = freshFolder("quiet");
+    const fs::path experiment = writeTinyExperiment(base);
+    const fs::path out = base / "out";
+    const Result r =
+        runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output, fmt::format("grainlab run: finished; outputs in {}\n", out.string()));
+    fs::remove_all(base);
 }
 
 TEST(RunFolder, ResumeOfAFinishedRunChangesNothing) {

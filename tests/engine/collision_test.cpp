@@ -1,4 +1,4 @@
-// Two-grain closed forms (SPEC §3.3, §3.6): head-on and oblique collisions, a loaded contact,
+// Two-grain closed forms (docs/physics.md): head-on and oblique collisions, a loaded contact,
 // Coulomb sliding.
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-// Contact detection against brute force (SPEC §3.2): the arc-pair rule with the minimum
+// Contact detection against brute force (docs/physics.md): the arc-pair rule with the minimum
 // overlap must agree with a separating-axis computation on fine polygons, and the fast 4-pair
 // form with the 16-pair reference.
 #include <algorithm>

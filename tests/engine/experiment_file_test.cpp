@@ -1,5 +1,5 @@
-// Experiment file: the shipped presets parse to SPEC §1, and every kind of bad input is refused
-// with an error naming the file, the key path, the value and what is allowed.
+// Experiment file: the shipped presets parse as docs/experiment-file.md says, and every kind of bad
+// input is refused with an error naming the file, the key path, the value and what is allowed.
 #include "experiment_fixtures.h"
 #include "grainlab/experiment_file.h"
 

@@ -1,5 +1,5 @@
-// Tests of the micro-structure measures (SPEC §4): closed forms on hand-built contact networks,
-// and the unbalanced-force index on a packing compacted by the engine.
+// Tests of the micro-structure measures (docs/measures.md): closed forms on hand-built contact
+// networks, and the unbalanced-force index on a packing compacted by the engine.
 #include <algorithm>
 #include <cmath>
 #include <numbers>

@@ -2,12 +2,13 @@
 // whole contact law is exercised), its final state hashed and compared with a checked-in hash.
 //
 // Applies to the portable build only (cmake -DGRAINLAB_NATIVE=OFF): there every operation is a
-// plain IEEE double operation in the order of the source (every build compiles the engine with
-// -ffp-contract=off), with SSE2's two lanes on every x86-64 processor, so the bits do not depend
-// on the processor. The default build (-march=native) vectorises the pair loop with the processor's
-// vector width, which changes the order of the sums of the deterministic reductions, so its
-// bits are the same for any thread count and across restarts on one processor, not across
-// processors; there this test only checks that two runs agree.
+// plain IEEE double operation in the order of the source (that build alone compiles the engine
+// with -ffp-contract=off), with SSE2's two lanes on every x86-64 processor, so the bits do not
+// depend on the processor. The default build (-march=native) lets GCC fuse multiply-adds and
+// vectorises the pair loop with the processor's vector width, which changes the order of the
+// sums of the deterministic reductions, so its bits are the same for any thread count and
+// across restarts on one processor, not across processors (docs/physics.md, "Determinism and
+// reproducibility"); there this test only checks that two runs agree.
 //
 // The hash must change only when the physics or the order of operations changes on purpose. To
 // regenerate it: configure with -DGRAINLAB_NATIVE=OFF, build engine_tests, run

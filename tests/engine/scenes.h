@@ -59,17 +59,6 @@ inline SimulationState smallAssembly(int count, double aspect, std::uint64_t see
     return generateGridAssembly(spec, p);
 }
 
-/// Compacts `state` isotropically to `pressure` [Pa] with the servo for `steps` steps.
-inline Simulation compacted(SimulationState state, double pressure, std::int64_t steps) {
-    state.parameters.servo.maxStrainRate = 40.0;
-    Simulation sim(std::move(state));
-    const AxisControl servo{AxisMode::Stress, 0.0, pressure};
-    sim.setAxisControl(0, servo);
-    sim.setAxisControl(1, servo);
-    sim.advance(steps);
-    return sim;
-}
-
 /// `count` grains of aspect ratio `aspect` (5 classes over 1-2 mm) compacted isotropically to
 /// 100 kPa, frictionless, by the shared scene: until the runner's equilibrium rule holds, or
 /// `steps` steps.
@@ -83,10 +72,6 @@ inline Simulation compactedPacking(int count, double aspect, std::uint64_t seed,
     spec.criterion.maxSteps = steps;
     return std::move(scenes::compactScene(spec).simulation);
 }
-
-/// A dense frictionless-compacted assembly at 100 kPa (computed once per aspect ratio and
-/// test binary): `count` grains, velocities cleared.
-SimulationState denseAssembly(int count, double aspect);
 
 /// A small frictional assembly squeezed (axial strain rate, lateral servo) until its grains
 /// touch, so that contacts carry tangential history, velocities and spins are non-zero, and a

@@ -1,6 +1,6 @@
-// Tests of the void cells (SPEC §4): faces of the load-bearing graph on the torus. Closed forms
-// on hand-built lattices, rings and chains; the two invariants (Euler on the torus, areas adding
-// up to the cell) on dense packings compacted by the engine.
+// Tests of the void cells (docs/measures.md): faces of the load-bearing graph on the torus. Closed
+// forms on hand-built lattices, rings and chains; the two invariants (Euler on the torus, areas
+// adding up to the cell) on dense packings compacted by the engine.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -270,7 +270,7 @@ TEST(VoidCells, InconsistentContactPointsAreFlaggedNotFatal) {
 
 using test::compactedPacking;
 
-/// The two invariants of SPEC §4 and the consistency of every cell with the network.
+/// The two invariants of docs/measures.md and the consistency of every cell with the network.
 void checkInvariants(const ContactNetwork& net) {
     const LoadBearingGraph graph = loadBearingGraph(net);
     const VoidCellSet set = computeVoidCells(net);

@@ -1,6 +1,6 @@
-// The charts panel plots the SPEC §4 columns of every test in its own colour, in display units,
-// replaces curves when rows are added, drops tests that are gone, and reports the eps1 under the
-// cursor and when the hover ends.
+// The charts panel plots the columns (docs/measures.md) of every test in its own colour, in display
+// units, replaces curves when rows are added, drops tests that are gone, and reports the eps1 under
+// the cursor and when the hover ends.
 #include <cmath>
 
 #include <QMouseEvent>

@@ -45,7 +45,7 @@ inline std::shared_ptr<Snapshot> unmeasuredCopy(const Snapshot& complete) {
     return s;
 }
 
-/// A synthetic shear series (columns of SPEC §4 that the charts use) for test `name`.
+/// A synthetic shear series (columns of docs/measures.md that the charts use) for test `name`.
 inline SeriesTable makeSeries(const std::string& name, int rows, double peak) {
     SeriesTable t;
     t.test = name;

@@ -1,7 +1,7 @@
 #pragma once
-// Sample generation (SPEC §1): grains placed on a grid in a rectangular periodic cell with
-// random orientations and no contact (a very loose start). Called once before a run, on the
-// caller's thread.
+// Sample generation (docs/experiment-file.md): grains placed on a grid in a rectangular periodic
+// cell with random orientations and no contact (a very loose start). Called once before a run, on
+// the caller's thread.
 
 #include <cstdint>
 #include <vector>

@@ -1,8 +1,8 @@
 #pragma once
-// Time series as CSV (SPEC §4, §5): a header row of `name [unit]` and one row per record, numbers
-// written with round-trip precision, the text column `stage` third (after `step` and `time`).
-// Written by the experiment runner's output on the engine thread, or by the GUI's export on its
-// thread; one writer per file. Never writes NaN or infinity: such a value is refused with an
+// Time series as CSV (docs/formats.md): a header row of `name [unit]` and one row per record,
+// numbers written with round-trip precision, the text column `stage` third (after `step` and
+// `time`). Written by the experiment runner's output on the engine thread, or by the GUI's export
+// on its thread; one writer per file. Never writes NaN or infinity: such a value is refused with an
 // error naming the column, before anything of that call is written.
 
 #include <cstddef>

@@ -1,7 +1,7 @@
 #pragma once
-// The experiment: everything one experiment file (JSON) says, as plain data (SPEC §1). Read by
-// experiment_file.h, run by experiment_runner.h, stored verbatim in the run file. Immutable once
-// a run starts; read from any thread.
+// The experiment: everything one experiment file (JSON) says, as plain data
+// (docs/experiment-file.md). Read by experiment_file.h, run by experiment_runner.h, stored verbatim
+// in the run file. Immutable once a run starts; read from any thread.
 
 #include <cstdint>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
-// Runs an experiment's stages (SPEC §1): generation, isotropic compaction to each confining
-// pressure (saving a sample at each), then for each sample: friction on, re-equilibration and
-// drained biaxial shear, each shear a separate test with its own series. Records the measures,
+// Runs an experiment's stages (docs/experiment-file.md): generation, isotropic compaction to each
+// confining pressure (saving a sample at each), then for each sample: friction on, re-equilibration
+// and drained biaxial shear, each shear a separate test with its own series. Records the measures,
 // writes checkpoints and outputs through an optional RunOutput, and builds snapshots.
 //
 // Synchronous: advance() runs on the caller's thread (the GUI's worker thread, or the main

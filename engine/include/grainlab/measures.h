@@ -1,5 +1,5 @@
 #pragma once
-// Micro-structure measures of SPEC §4 computed from one ContactNetwork: coordination, the
+// Micro-structure measures (docs/measures.md) computed from one ContactNetwork: coordination, the
 // load-bearing graph, Thornton's mechanical coordination, sliding index, fabric tensors of all,
 // strong and weak contacts, the unbalanced-force index, the void ratio, the void cells (through
 // void_cells.h), plus the stress invariants and the ordered list of time-series columns with
@@ -23,7 +23,7 @@ namespace grainlab {
 
 /// Which force splits the contacts into strong and weak.
 enum class StrongForceThreshold {
-    RmsForce,        ///< strong when |f| > f_a = sqrt(sum |f|^2 / N_c) (the SPEC default)
+    RmsForce,        ///< strong when |f| > f_a = sqrt(sum |f|^2 / N_c) (the default)
     MeanNormalForce, ///< strong when f_n > <f_n> (Radjai et al. 1998)
 };
 
@@ -68,7 +68,7 @@ struct StrongWeakFabric {
     double threshold = 0; ///< the force separating them [N]
 };
 
-/// Stress invariants of SPEC §2 (x1 axial, compression positive).
+/// Stress invariants p, q, q/p (docs/measures.md; x1 axial, compression positive).
 struct StressMeasures {
     double p = 0;      ///< (sigma11 + sigma22) / 2 [Pa]
     double q = 0;      ///< (sigma11 - sigma22) / 2 [Pa]
@@ -76,7 +76,7 @@ struct StressMeasures {
     double phiDeg = 0; ///< asin(q / p), q / p clamped to [-1, 1] [deg]
 };
 
-/// Everything of SPEC §4 that follows from one contact network.
+/// Every measure of docs/measures.md that follows from one contact network.
 struct MeasureSet {
     CoordinationCounts counts;
     LoadBearingGraph loadBearing;
@@ -117,9 +117,9 @@ double inertialNumber(double strainRate1, double strainRate2, double diameter, d
 
 MeasureSet computeMeasures(const ContactNetwork& network, const MeasureOptions& options = {});
 
-// ---- Time-series columns (SPEC §4, the CSV contract; SeriesColumn is in series.h) ----
+// ---- Time-series columns (docs/measures.md, the CSV contract; SeriesColumn is in series.h) ----
 
-/// The columns of SPEC §4 in order, `stage` included.
+/// The columns of docs/measures.md in order, `stage` included.
 const std::vector<SeriesColumn>& seriesColumns();
 /// "name [unit]" (the text column `stage`: its bare name).
 std::string seriesHeader(const SeriesColumn& column);

@@ -1,8 +1,8 @@
 #pragma once
-// The four-arc oval (SPEC §3.1): two end arcs of radius r and two side arcs of radius R joined
-// with a common tangent. Owns the geometry of one grain shape in its body frame: arc centres,
-// radii, the junction angle, area and polar moment. Pure functions of plain numbers; used by
-// the contact kernels (hot loop), the generator, the measures and the renderers on any thread.
+// The four-arc oval (docs/physics.md): two end arcs of radius r and two side arcs of radius R
+// joined with a common tangent. Owns the geometry of one grain shape in its body frame: arc
+// centres, radii, the junction angle, area and polar moment. Pure functions of plain numbers; used
+// by the contact kernels (hot loop), the generator, the measures and the renderers on any thread.
 //
 // Body frame: the major axis (width W = 2a) along x, the minor axis (height H = 2b) along y.
 
@@ -24,7 +24,7 @@ struct Arc {
     double radius;  ///< [m]
 };
 
-/// Index of the four arcs, in the order of SPEC §3.1's table.
+/// Index of the four arcs: right end, top side, left end, bottom side.
 enum ArcIndex : int { kRightEnd = 0, kTopSide = 1, kLeftEnd = 2, kBottomSide = 3 };
 
 struct OvalShape {
@@ -41,7 +41,7 @@ struct OvalShape {
     double polarMoment = 0;   ///< J = integral of |x|^2 dA about the centre [m^4]
     bool isDisk = false;      ///< aspect ratio 1: a disk of radius a (fast path)
 
-    /// The four arcs in SPEC order: right end, top side, left end, bottom side.
+    /// The four arcs in order: right end, top side, left end, bottom side.
     std::array<Arc, 4> arcs() const;
     /// Equivalent diameter sqrt(4 A / pi) [m].
     double equivalentDiameter() const;
@@ -55,7 +55,8 @@ struct OvalShape {
 OvalShape makeOval(double width, double aspectRatio, OvalClosure closure = OvalClosure::EqualArea,
                    double endRadiusRatio = 0.0);
 
-/// Area of a four-arc oval from its arc parameters (SPEC §3.1 closed form) [m^2].
+/// Area of a four-arc oval from its arc parameters [m^2], in closed form:
+/// A = 2 phi r^2 + (pi - 2 phi) R^2 - (R - r)^2 sin 2 phi.
 double ovalArea(double endRadius, double sideRadius, double junctionAngle);
 
 /// Tolerance on direction tests so that a junction direction belongs to both arcs.

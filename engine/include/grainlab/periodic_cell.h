@@ -1,5 +1,5 @@
 #pragma once
-// Arithmetic of the periodic cell (SPEC §3.4): the cell matrix h has the cell vectors as its
+// Arithmetic of the periodic cell (docs/physics.md): the cell matrix h has the cell vectors as its
 // columns, stored column-major as {h11, h21, h12, h22}. Inline functions of plain numbers, for
 // the engine, the measures and the renderers on any thread.
 

@@ -1,7 +1,7 @@
 #pragma once
 // A small, portable random-number generator (SplitMix64). The standard distributions are not
 // specified bit for bit across library versions; this is, so a seed in an experiment file
-// gives the same run everywhere (SPEC §2). Not thread-safe: one generator per thread of use.
+// gives the same run everywhere. Not thread-safe: one generator per thread of use.
 
 #include <cstdint>
 

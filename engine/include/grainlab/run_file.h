@@ -1,5 +1,5 @@
 #pragma once
-// The HDF5 run file (SPEC §5; layout in docs/formats.md): the experiment text, the software
+// The HDF5 run file (layout in docs/formats.md): the experiment text, the software
 // version, every test's time series, the compacted samples and complete checkpoints
 // (SimulationState + runner state) from which a run continues bit for bit, each with its
 // contacts (forces, normals, contact points) and void cells (polygons, second moments), and per
@@ -79,10 +79,19 @@ public:
     void warnings(const std::vector<RunWarning>& all) override;
     /// Flushes everything written so far to disk.
     void flush();
+    /// Flushes and closes the file (the destructor does too, but cannot report a failure).
+    /// Throws std::runtime_error if the last flush fails; the file then keeps its last
+    /// complete checkpoint. Nothing may be written after it.
+    void close();
 
     const std::string& path() const;
+    /// The last complete checkpoint on disk that a resumed run continues from (not a peak
+    /// checkpoint); "" before the first. After a failed write: the one the file keeps.
+    const std::string& lastCheckpoint() const;
 
 private:
+    void open(const std::string& experimentText, Mode mode);
+    void closeHandles();
     void recordNow(const SeriesTable& series);
     void checkpointNow(const std::string& name, const SimulationState& state,
                        const std::string& runnerState, const StageIdentity* identity);

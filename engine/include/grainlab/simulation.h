@@ -1,10 +1,10 @@
 #pragma once
-// The time-stepping engine: grains in a deforming periodic cell (SPEC §3). Owns the grain state
-// (structure of arrays), the neighbour list with the persistent contact history, the cell and
-// its servo. Synchronous: step() runs on the caller's thread (a worker thread in the GUI, the
-// main thread headless) and uses OpenMP inside; results are bit-identical for any thread count
-// because forces are computed per pair, then gathered per grain in a fixed order, and every sum
-// is taken over fixed blocks in a fixed order. Not thread-safe: one thread drives it.
+// The time-stepping engine: grains in a deforming periodic cell (docs/physics.md). Owns the grain
+// state (structure of arrays), the neighbour list with the persistent contact history, the cell and
+// its servo. Synchronous: step() runs on the caller's thread (a worker thread in the GUI, the main
+// thread headless) and uses OpenMP inside; results are bit-identical for any thread count because
+// forces are computed per pair, then gathered per grain in a fixed order, and every sum is taken
+// over fixed blocks in a fixed order. Not thread-safe: one thread drives it.
 
 #include <array>
 #include <cstdint>

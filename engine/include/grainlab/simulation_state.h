@@ -1,8 +1,8 @@
 #pragma once
 // The complete state of a simulation: everything a checkpoint holds and everything needed to
-// continue a run bit for bit (SPEC §5). Plain data, structure of arrays. A SimulationState is
-// built by the generator or read from a run file, handed to Simulation, and copied out of it
-// for checkpoints and snapshots. Not shared between threads while being written.
+// continue a run bit for bit (docs/formats.md). Plain data, structure of arrays. A SimulationState
+// is built by the generator or read from a run file, handed to Simulation, and copied out of it for
+// checkpoints and snapshots. Not shared between threads while being written.
 
 #include <array>
 #include <cstdint>
@@ -13,7 +13,7 @@
 
 namespace grainlab {
 
-/// How the fluctuating motion is damped (SPEC §3.6).
+/// How the fluctuating motion is damped (docs/physics.md).
 enum class DampingKind {
     None,          ///< no damping (closed-form tests)
     GlobalViscous, ///< F = -2 beta sqrt(k_n m) v', M = -2 beta sqrt(k_n a^2 I) omega
@@ -25,7 +25,8 @@ struct DampingParameters {
     double coefficient = 0.05; ///< beta (viscous) or alpha (local) [-]
 };
 
-/// How one axis of the cell is driven (SPEC §3.5). Compression positive.
+/// How one axis of the cell is driven: a strain rate, or a stress held by the servo. Compression
+/// positive.
 enum class AxisMode { Strain, Stress };
 
 struct AxisControl {

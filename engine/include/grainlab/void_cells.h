@@ -1,10 +1,10 @@
 #pragma once
-// Void cells (SPEC §4): the faces of the load-bearing contact graph embedded on the torus of the
-// periodic cell, each edge drawn as the polyline centre -> contact point -> centre (planar for
-// convex grains). Faces are found by face traversal of the rotation system: at each grain, its
-// graph contacts sorted counter-clockwise by the angle of the contact point about the grain
-// centre. Walks are carried in unwrapped coordinates (image shifts accumulated along the walk),
-// so areas and shapes are exact on the torus.
+// Void cells (docs/measures.md): the faces of the load-bearing contact graph embedded on the torus
+// of the periodic cell, each edge drawn as the polyline centre -> contact point -> centre (planar
+// for convex grains). Faces are found by face traversal of the rotation system: at each grain, its
+// graph contacts sorted counter-clockwise by the angle of the contact point about the grain centre.
+// Walks are carried in unwrapped coordinates (image shifts accumulated along the walk), so areas
+// and shapes are exact on the torus.
 //
 // Pure functions of an immutable ContactNetwork: called at record or display time on whichever
 // thread owns the network (the engine worker in the GUI, the main thread headless); the result

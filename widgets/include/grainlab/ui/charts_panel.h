@@ -6,8 +6,8 @@
 // coordination Z and unbalanced-force index I_uf against step, drawn from the rows recorded
 // during compaction (the compaction series). Several tests overlay
 // in one chart, one colour per test, one line style per quantity. Column names are the CSV
-// contract of SPEC §4. Hovering a chart marks the point under the cursor and reports its eps1,
-// and reports when the hover ends (the cursor leaves the plot area).
+// contract of docs/measures.md. Hovering a chart marks the point under the cursor and reports
+// its eps1, and reports when the hover ends (the cursor leaves the plot area).
 // GUI thread only; series are replaced wholesale (QXYSeries::replace), never appended point by
 // point.
 
