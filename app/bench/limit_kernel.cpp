@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "grainlab/contact_geometry.h"
+#include "grainlab/contact_law.h"
 #include "grainlab/periodic_cell.h"
 #include "grainlab/simulation.h"
 
@@ -221,7 +223,8 @@ void LimitKernel::buildIndex() {
 void LimitKernel::pairForces(double dt) {
     const std::size_t pairs = first_.size();
     const int blocks = reductionBlocks(pairs);
-    const double kn = normalStiffness_, kt = tangentialStiffness_, mu = friction_;
+    const ContactLawParameters parameters =
+        contactLawParameters(normalStiffness_, tangentialStiffness_, friction_, dt);
     const double h0 = cell_[0], h1 = cell_[1], h2 = cell_[2], h3 = cell_[3];
     const double L0 = L_[0], L1 = L_[1], L2 = L_[2], L3 = L_[3];
     const std::int32_t* first = first_.data();
@@ -250,24 +253,21 @@ void LimitKernel::pairForces(double dt) {
             const double k1 = shift1[p], k2 = shift2[p];
             const double l1 = x1[j] + h0 * k1 + h2 * k2 - x1[i];
             const double l2 = x2[j] + h1 * k1 + h3 * k2 - x2[i];
-            const double r = reach[p];
+            // The engine's disk geometry and contact law: the same inline kernels its pair loop
+            // calls, in the same order.
             const double d2 = l1 * l1 + l2 * l2;
-            // The engine's disk geometry and contact law, in its order of operations.
-            const double distance = std::sqrt(d2);
-            const double inv = 1.0 / std::max(distance, std::numeric_limits<double>::min());
-            const double overlap = r - distance;
-            const bool touching = (d2 < r * r) & (d2 > 0.0) & (overlap > 0.0);
-            const double n1 = l1 * inv, n2 = l2 * inv, t1 = -n2, t2 = n1;
-            const double arm = radius[i] - 0.5 * overlap;
-            const double pA1 = arm * n1, pA2 = arm * n2;
-            const double fn = touching ? kn * overlap : 0.0;
+            const ContactGeometry g = diskContact(radius[i], reach[p], l1, l2);
+            const bool touching = (d2 > 0.0) & (g.overlap > 0.0);
+            const double n1 = g.normalX, n2 = g.normalY, t1 = -n2, t2 = n1;
+            const double pA1 = g.pointX, pA2 = g.pointY;
+            ContactForce law;
+            law.normal = touching ? normalContactForce(g.overlap, parameters) : 0.0;
             const double pB1 = pA1 - l1, pB2 = pA2 - l2;
             const double vr1 = v1[j] - v1[i] + L0 * l1 + L2 * l2 - omega[j] * pB2 + omega[i] * pA2;
             const double vr2 = v2[j] - v2[i] + L1 * l1 + L3 * l2 + omega[j] * pB1 - omega[i] * pA1;
-            const double trial = stored[p] - kt * (vr1 * t1 + vr2 * t2) * dt;
-            const double limit = mu * fn;
-            const double capped = std::fabs(trial) > limit ? std::copysign(limit, trial) : trial;
-            const double ft = touching ? capped : 0.0;
+            tangentialContactForce(law.normal, vr1 * t1 + vr2 * t2, stored[p], parameters, law);
+            const double fn = law.normal;
+            const double ft = touching ? law.tangential : 0.0;
             const double f1 = fn * n1 + ft * t1, f2 = fn * n2 + ft * t2;
             stored[p] = ft;
             force1[p] = f1;
