@@ -230,8 +230,9 @@ namespace detail {
 inline bool admitsBySquares(double along, double limit, double w2) {
     const double alongSquared = along * along, limitSquared = limit * limit * w2;
     // & and |, not && and ||: no branches (vectorised loop).
-    return along >= 0.0 ? ((limit <= 0.0) | (alongSquared >= limitSquared))
-                        : ((limit < 0.0) & (alongSquared <= limitSquared));
+    const bool forward = along >= 0.0;
+    return (forward & ((limit <= 0.0) | (alongSquared >= limitSquared))) |
+           (!forward & (limit < 0.0) & (alongSquared <= limitSquared));
 }
 
 } // namespace detail
