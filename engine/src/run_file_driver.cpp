@@ -119,13 +119,22 @@ herr_t driverGetHandle(H5FD_t* file, hid_t, void** handle) {
     return 0;
 }
 
+/// True (with an HDF5 error pushed, named after `function`) when [address, address + size) is
+/// not inside the file's allocated space.
+bool outsideAllocation(const DriverFile* f, haddr_t address, size_t size, const char* function) {
+    if (address != HADDR_UNDEF && address + size <= f->eoa) {
+        return false;
+    }
+    H5Epush2(H5E_DEFAULT, __FILE__, function, __LINE__, H5E_ERR_CLS, H5E_IO, H5E_OVERFLOW,
+             "addr overflow, addr = %llu, size = %llu, eoa = %llu",
+             static_cast<unsigned long long>(address), static_cast<unsigned long long>(size),
+             static_cast<unsigned long long>(f->eoa));
+    return true;
+}
+
 herr_t driverRead(H5FD_t* file, H5FD_mem_t, hid_t, haddr_t address, size_t size, void* buffer) {
     DriverFile* f = of(file);
-    if (address == HADDR_UNDEF || address + size > f->eoa) {
-        H5Epush2(H5E_DEFAULT, __FILE__, "driverRead", __LINE__, H5E_ERR_CLS, H5E_IO, H5E_OVERFLOW,
-                 "addr overflow, addr = %llu, size = %llu, eoa = %llu",
-                 static_cast<unsigned long long>(address), static_cast<unsigned long long>(size),
-                 static_cast<unsigned long long>(f->eoa));
+    if (outsideAllocation(f, address, size, "driverRead")) {
         return -1;
     }
     auto* out = static_cast<unsigned char*>(buffer);
@@ -158,11 +167,7 @@ herr_t driverRead(H5FD_t* file, H5FD_mem_t, hid_t, haddr_t address, size_t size,
 herr_t driverWrite(H5FD_t* file, H5FD_mem_t, hid_t, haddr_t address, size_t size,
                    const void* buffer) {
     DriverFile* f = of(file);
-    if (address == HADDR_UNDEF || address + size > f->eoa) {
-        H5Epush2(H5E_DEFAULT, __FILE__, "driverWrite", __LINE__, H5E_ERR_CLS, H5E_IO, H5E_OVERFLOW,
-                 "addr overflow, addr = %llu, size = %llu, eoa = %llu",
-                 static_cast<unsigned long long>(address), static_cast<unsigned long long>(size),
-                 static_cast<unsigned long long>(f->eoa));
+    if (outsideAllocation(f, address, size, "driverWrite")) {
         return -1;
     }
     const auto* in = static_cast<const unsigned char*>(buffer);

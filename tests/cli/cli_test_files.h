@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -27,5 +28,18 @@ inline std::filesystem::path freshFolder(const std::string& kind, const std::str
     std::filesystem::create_directories(p);
     return p;
 }
+
+#ifdef GRAINLAB_EXE
+/// In a forked child: replaces it by grainlab with `arguments` (exit status 127 if that fails).
+[[noreturn]] inline void execGrainlab(const std::vector<std::string>& arguments) {
+    std::vector<char*> argv{const_cast<char*>(GRAINLAB_EXE)};
+    for (const auto& a : arguments) {
+        argv.push_back(const_cast<char*>(a.c_str()));
+    }
+    argv.push_back(nullptr);
+    execv(GRAINLAB_EXE, argv.data());
+    _exit(127);
+}
+#endif
 
 } // namespace grainlab::test

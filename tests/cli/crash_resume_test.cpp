@@ -32,6 +32,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using test::execGrainlab;
 using test::readText;
 
 /// Two compaction stages of 200 ovals from the grid, two shear tests with friction 0.5 to
@@ -64,13 +65,7 @@ int runGrainlab(const std::vector<std::string>& arguments, std::int64_t stopAfte
         }
         std::freopen("/dev/null", "w", stdout);
         std::freopen("/dev/null", "w", stderr);
-        std::vector<char*> argv{const_cast<char*>(GRAINLAB_EXE)};
-        for (const auto& a : arguments) {
-            argv.push_back(const_cast<char*>(a.c_str()));
-        }
-        argv.push_back(nullptr);
-        execv(GRAINLAB_EXE, argv.data());
-        _exit(127);
+        execGrainlab(arguments);
     }
     int status = 0;
     waitpid(child, &status, 0);

@@ -26,6 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using test::execGrainlab;
 using test::readText;
 
 struct Result {
@@ -52,13 +53,7 @@ Result runLimited(const std::vector<std::string>& arguments, rlim_t limit) {
             l.rlim_cur = l.rlim_max = limit;
             ::setrlimit(RLIMIT_FSIZE, &l);
         }
-        std::vector<char*> argv{const_cast<char*>(GRAINLAB_EXE)};
-        for (const auto& a : arguments) {
-            argv.push_back(const_cast<char*>(a.c_str()));
-        }
-        argv.push_back(nullptr);
-        execv(GRAINLAB_EXE, argv.data());
-        _exit(127);
+        execGrainlab(arguments);
     }
     ::close(pipeFds[1]);
     Result r;
