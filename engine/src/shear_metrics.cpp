@@ -75,6 +75,7 @@ ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
         m.volumetricStrainAt[s] = valueAt(ev, kMetricStrains[s]);
     }
     const double at10 = kMetricStrains[2];
+    m.coordinationAt5 = valueAt(shearCurve(test, "Z"), kMetricStrains[1]);
     m.coordinationAt10 = valueAt(shearCurve(test, "Z"), at10);
     m.effectiveCoordinationAt10 = valueAt(shearCurve(test, "Z_eff"), at10);
     m.voidCountRatioAt10 = valueAt(shearCurve(test, "Nv_over_Nvi"), at10);
@@ -136,6 +137,7 @@ std::vector<NamedMetric> namedMetrics(const ShearMetrics& m) {
     }
     out.push_back({"DI_max", "-", m.maxDilatancy});
     out.push_back({"e_compacted", "-", m.voidRatioAtStart});
+    out.push_back({"Z_at_5pc", "-", m.coordinationAt5});
     out.push_back({"Z_at_10pc", "-", m.coordinationAt10});
     out.push_back({"Z_eff_at_10pc", "-", m.effectiveCoordinationAt10});
     out.push_back({"Nv_over_Nvi_at_10pc", "-", m.voidCountRatioAt10});

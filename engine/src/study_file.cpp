@@ -44,6 +44,7 @@ std::map<std::string, Tolerance> defaultTolerances() {
         t[m] = {0.002, false};
     }
     t["e_compacted"] = {0.005, false};
+    t["Z_at_5pc"] = {0.05, false};
     t["Z_at_10pc"] = {0.05, false};
     t["Z_eff_at_10pc"] = {0.05, false};
     t["rms_q_over_p"] = {0.02, false};

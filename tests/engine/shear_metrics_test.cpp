@@ -58,6 +58,7 @@ TEST(ShearMetrics, PeakAndValuesAtFixedStrainsOfAKnownCurve) {
     EXPECT_NEAR(*m.volumetricStrainAt[1], -0.025, 1e-15);
     EXPECT_DOUBLE_EQ(*m.maxDilatancy, 0.7);
     EXPECT_DOUBLE_EQ(*m.voidRatioAtStart, 0.2);
+    EXPECT_NEAR(*m.coordinationAt5, 3.95, 1e-14);
     EXPECT_NEAR(*m.coordinationAt10, 3.9, 1e-14);
     EXPECT_NEAR(*m.effectiveCoordinationAt10, 4.4, 1e-14);
     EXPECT_NEAR(*m.voidCountRatioAt10, 0.9, 1e-14);
@@ -76,6 +77,7 @@ TEST(ShearMetrics, StrainsNotReachedAndMissingShearAreLeftEmpty) {
     EXPECT_TRUE(m.stressRatioAt[0]);
     EXPECT_FALSE(m.stressRatioAt[1]);
     EXPECT_FALSE(m.stressRatioAt[2]);
+    EXPECT_FALSE(m.coordinationAt5);
     EXPECT_FALSE(m.coordinationAt10);
     // Only the re-equilibration: no shear metrics at all, but the compacted sample's e.
     t.rows.resize(1);
@@ -100,13 +102,15 @@ TEST(ShearMetrics, TheRowsStageKindDecidesWhatIsShearWhereTheTableHasIt) {
 TEST(ShearMetrics, NamedMetricsCarryEveryValueWithItsUnit) {
     const ShearMetrics m = shearMetrics(syntheticTest(), 1e5);
     const auto named = namedMetrics(m);
-    ASSERT_EQ(named.size(), 18u);
+    ASSERT_EQ(named.size(), 19u);
     EXPECT_EQ(named[0].name, "peak_q_over_p");
     EXPECT_DOUBLE_EQ(*named[0].value, 0.5);
     EXPECT_EQ(named[4].name, "q_over_p_at_5pc");
     EXPECT_NEAR(*named[4].value, 0.48, 1e-14);
-    EXPECT_EQ(named[16].name, "I_uf_mean");
-    EXPECT_EQ(named[16].unit, "%");
+    EXPECT_EQ(named[11].name, "Z_at_5pc");
+    EXPECT_NEAR(*named[11].value, 3.95, 1e-14);
+    EXPECT_EQ(named[17].name, "I_uf_mean");
+    EXPECT_EQ(named[17].unit, "%");
     for (const auto& n : named) {
         EXPECT_TRUE(n.value) << n.name;
     }

@@ -28,6 +28,7 @@ struct ShearMetrics {
     std::optional<double> volumetricStrainAt[3]; ///< eps_v at eps1 = kMetricStrains [-]
     std::optional<double> maxDilatancy;          ///< largest dilatancy index -d eps_v/d eps1 [-]
     std::optional<double> voidRatioAtStart;      ///< e of the compacted sample (first row) [-]
+    std::optional<double> coordinationAt5;       ///< Z at eps1 = 5 % [-]
     std::optional<double> coordinationAt10;      ///< Z at eps1 = 10 % [-]
     std::optional<double> effectiveCoordinationAt10; ///< Z_eff at eps1 = 10 % [-]
     std::optional<double> voidCountRatioAt10;        ///< N_v/N_vi at eps1 = 10 % [-]
