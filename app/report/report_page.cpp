@@ -32,8 +32,14 @@ std::string comparisonText(const Scatter& s, const PublishedValue& published, in
     }
     const Comparison c = compare(s, published);
     if (published.upperBound) {
-        return c.agrees ? "below the bound" : (c.beyondScatter ? "above the bound, beyond the scatter"
-                                                              : "above the bound, within the scatter");
+        if (c.agrees) {
+            return "below the bound";
+        }
+        if (s.count < 2) {
+            return "above the bound (one run: no scatter to judge by)";
+        }
+        return c.beyondScatter ? "above the bound, beyond the scatter"
+                               : "above the bound, within the scatter";
     }
     const std::string d = fmt::format("{:+.{}f}", c.difference, digits);
     if (s.count < 2) {
