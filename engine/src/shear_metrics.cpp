@@ -29,6 +29,21 @@ std::optional<double> cell(const SeriesTable& t, int column, std::size_t k) {
     return t.rows[k][std::size_t(column)];
 }
 
+/// y at the metric strain `strain`. A shear run to exactly that strain ends a fraction of a
+/// step's strain short of it (the strain is a sum of steps: 0.04999999 for 5 %); its last record
+/// then stands for the strain when it lies within 1e-4 of it (relative), so that a study's
+/// shear to 5 % has its values at 5 %.
+std::optional<double> valueAtStrain(const Curve& curve, double strain) {
+    if (const auto v = valueAt(curve, strain)) {
+        return v;
+    }
+    const std::size_t n = std::min(curve.x.size(), curve.y.size());
+    if (n > 0 && curve.x[n - 1] < strain && curve.x[n - 1] >= strain * (1 - 1e-4)) {
+        return curve.y[n - 1];
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 Curve shearCurve(const SeriesTable& test, const std::string& column) {
@@ -71,15 +86,15 @@ ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
     }
     const Curve q = shearCurve(test, "q_over_p"), ev = shearCurve(test, "epsv");
     for (int s = 0; s < 3; ++s) {
-        m.stressRatioAt[s] = valueAt(q, kMetricStrains[s]);
-        m.volumetricStrainAt[s] = valueAt(ev, kMetricStrains[s]);
+        m.stressRatioAt[s] = valueAtStrain(q, kMetricStrains[s]);
+        m.volumetricStrainAt[s] = valueAtStrain(ev, kMetricStrains[s]);
     }
     const double at10 = kMetricStrains[2];
-    m.coordinationAt5 = valueAt(shearCurve(test, "Z"), kMetricStrains[1]);
-    m.coordinationAt10 = valueAt(shearCurve(test, "Z"), at10);
-    m.effectiveCoordinationAt10 = valueAt(shearCurve(test, "Z_eff"), at10);
-    m.voidCountRatioAt10 = valueAt(shearCurve(test, "Nv_over_Nvi"), at10);
-    m.fabricAt10 = valueAt(shearCurve(test, "Hdev"), at10);
+    m.coordinationAt5 = valueAtStrain(shearCurve(test, "Z"), kMetricStrains[1]);
+    m.coordinationAt10 = valueAtStrain(shearCurve(test, "Z"), at10);
+    m.effectiveCoordinationAt10 = valueAtStrain(shearCurve(test, "Z_eff"), at10);
+    m.voidCountRatioAt10 = valueAtStrain(shearCurve(test, "Nv_over_Nvi"), at10);
+    m.fabricAt10 = valueAtStrain(shearCurve(test, "Hdev"), at10);
 
     double maxDi = -INFINITY, maxError = 0, sumIuf = 0;
     for (std::size_t k : rows) {

@@ -88,6 +88,26 @@ TEST(ShearMetrics, StrainsNotReachedAndMissingShearAreLeftEmpty) {
     EXPECT_DOUBLE_EQ(*none.voidRatioAtStart, 0.2);
 }
 
+TEST(ShearMetrics, AShearThatEndsAFractionOfAStepShortOfAMetricStrainHasItsValueThere) {
+    SeriesTable t = syntheticTest();
+    // Cut at eps1 = 5 %, then move the last record a hair short of it, as a shear to exactly 5 %
+    // ends (its strain a sum of steps): the last record stands for 5 %.
+    t.rows.resize(7);
+    t.stages.resize(7);
+    const auto eps1 = std::size_t(t.column("eps1"));
+    t.rows.back()[eps1] = 0.05 * (1 - 2e-7);
+    ShearMetrics m = shearMetrics(t, 1e5);
+    ASSERT_TRUE(m.stressRatioAt[1]);
+    EXPECT_DOUBLE_EQ(*m.stressRatioAt[1], t.rows.back()[std::size_t(t.column("q_over_p"))]);
+    ASSERT_TRUE(m.coordinationAt5);
+    EXPECT_FALSE(m.coordinationAt10);
+    // A shear that stops clearly short of 5 % (by 1e-3 of it) has no value there.
+    t.rows.back()[eps1] = 0.05 * (1 - 1e-3);
+    m = shearMetrics(t, 1e5);
+    EXPECT_FALSE(m.stressRatioAt[1]);
+    EXPECT_FALSE(m.coordinationAt5);
+}
+
 TEST(ShearMetrics, TheRowsStageKindDecidesWhatIsShearWhereTheTableHasIt) {
     SeriesTable t = syntheticTest();
     // As the runner and the run file record them: the first row re-equilibration, then shear.
