@@ -325,7 +325,7 @@ void Simulation::pairForces() {
         // Pairs the quadrant kernel cannot decide (ovals; rare): decided after the loop by the
         // 16-pair reference. The quadrant kernel, not the facing-pair kernel with its single
         // square root: measured on an AMD EPYC (Zen 4), the quadrant loop runs 1.2-1.4x faster
-        // (its four square roots cost less than the facing-pair kernel's extra selects there).
+        // (the loop is bound by its gathers there, not by square roots).
         // Flags as doubles, copied to bytes after the loop: a byte store in the simd loop makes
         // GCC 12 choose 32 lanes per iteration (the narrowest type sets the vectorisation
         // factor), and the kernel then spills (1.3x slower for ovals).
