@@ -237,7 +237,9 @@ std::string reportMarkdown(const ReportPage& page) {
     for (const auto& r : t.rows) {
         md += row(r);
     }
-    md += "\n" + pooledText(page.pooled) + "\n\n## Figures\n\n";
+    md += "\n";
+    md += pooledText(page.pooled); // appended, not "\n" + …: GCC 12 warns falsely (-Wrestrict)
+    md += "\n\n## Figures\n\n";
     const std::string folder = fs::path(page.figureFolder).filename().string();
     for (const auto& [stem, caption] : pageFigures(page)) {
         const bool png = fs::exists(fs::path(page.figureFolder) / (stem + ".png"));
