@@ -95,9 +95,11 @@ struct ArcTables {
     const double *endOffset, *sideOffset, *endRadius, *sideRadius, *cosJ, *sinJ, *cosT, *sinT;
 };
 
-/// Oval pair geometry as the pair loop decides it, from the same per-grain numbers: the facing-pair
-/// kernel; where it cannot decide, the quadrant kernel; where that asks, the 16-pair reference
-/// (always with `allArcPairs`). Scalar: for the pairs the vector loop hands on, and the network.
+/// Oval pair geometry from the pair loop's per-grain numbers: the facing-pair kernel; where it
+/// cannot decide, the quadrant kernel; where that asks, the 16-pair reference (always with
+/// `allArcPairs`). Where the facing-pair kernel decides it has the quadrant kernel's bits
+/// (tested), so this is the geometry of the vector loop, which calls the quadrant kernel. Scalar:
+/// for the pairs the vector loop hands on, and the network.
 ContactGeometry decideOvalPair(const ArcTables& t, const OvalShape& A, const OvalShape& B,
                                std::int32_t i, std::int32_t j, double l1, double l2,
                                double smallerWidth, bool allArcPairs) {

@@ -326,9 +326,9 @@ inline FacingPairContact ovalContactFacingPair(const OvalArcs& A, double cA, dou
                                  dx, dy, std::min(A.width, B.width));
 }
 
-/// Oval-oval contact, fast form, as the engine's pair loop decides it: the facing-pair kernel;
-/// where it cannot decide, the quadrant kernel (4 arc pairs, minimum overlap); where that asks,
-/// the 16-pair reference. Agrees with ovalContactAllPairs (tested on random pairs with large
+/// Oval-oval contact, fast form: the facing-pair kernel; where it cannot decide, the quadrant
+/// kernel (4 arc pairs, minimum overlap; the engine's vector pair loop calls it directly, with the
+/// same bits); where that asks, the 16-pair reference. Agrees with ovalContactAllPairs (tested on random pairs with large
 /// overlaps). (cA, sA), (cB, sB): cos and sin of the orientations.
 inline ContactGeometry ovalContact(const OvalShape& A, double cA, double sA, const OvalShape& B,
                                    double cB, double sB, double dx, double dy) {
