@@ -95,22 +95,13 @@ struct ArcTables {
     const double *endOffset, *sideOffset, *endRadius, *sideRadius, *cosJ, *sinJ, *cosT, *sinT;
 };
 
-/// Oval pair geometry from the pair loop's per-grain numbers: the facing-pair kernel; where it
-/// cannot decide, the quadrant kernel; where that asks, the 16-pair reference (always with
-/// `allArcPairs`). Where the facing-pair kernel decides it has the quadrant kernel's bits
-/// (tested), so this is the geometry of the vector loop, which calls the quadrant kernel. Scalar:
+/// Oval pair geometry as the vector pair loop decides it, from the same per-grain numbers: the
+/// quadrant kernel; where that asks, the 16-pair reference (always with `allArcPairs`). Scalar:
 /// for the pairs the vector loop hands on, and the network.
 ContactGeometry decideOvalPair(const ArcTables& t, const OvalShape& A, const OvalShape& B,
                                std::int32_t i, std::int32_t j, double l1, double l2,
                                double smallerWidth, bool allArcPairs) {
     if (!allArcPairs) {
-        const FacingPairContact f = ovalContactFacingPair(
-            t.endOffset[i], t.sideOffset[i], t.endRadius[i], t.sideRadius[i], t.cosJ[i], t.sinJ[i],
-            t.cosT[i], t.sinT[i], t.endOffset[j], t.sideOffset[j], t.endRadius[j], t.sideRadius[j],
-            t.cosJ[j], t.sinJ[j], t.cosT[j], t.sinT[j], l1, l2, smallerWidth);
-        if (!f.undecided) {
-            return f.geometry;
-        }
         const QuadrantContact q = ovalContactQuadrant(
             t.endOffset[i], t.sideOffset[i], t.endRadius[i], t.sideRadius[i], t.cosJ[i], t.sinJ[i],
             t.cosT[i], t.sinT[i], t.endOffset[j], t.sideOffset[j], t.endRadius[j], t.sideRadius[j],
