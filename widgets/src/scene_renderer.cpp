@@ -8,10 +8,12 @@
 #include <cmath>
 #include <numbers>
 
+#include <QPaintEngine>
 #include <QPainter>
 
 #include "grainlab/measures.h"
 #include "grainlab/ui/colour_maps.h"
+#include "grainlab/ui/pixel_canvas.h"
 
 namespace grainlab::ui {
 namespace {
@@ -35,6 +37,7 @@ void SceneRenderer::setSnapshot(SnapshotPtr snapshot) {
     outlines_.clear();
     voidPolygons_.clear();
     voidBoxes_.clear();
+    voidOrder_.clear();
     voidEdges_.clear();
     voidEdgesReady_ = false;
     chainLines_.clear();
@@ -151,6 +154,13 @@ void SceneRenderer::setSnapshot(SnapshotPtr snapshot) {
         areaSum += cell.area;
     }
     meanVoidArea_ = s.voidCells.empty() ? 0.0 : areaSum / double(s.voidCells.size());
+    voidOrder_.resize(voidPolygons_.size());
+    for (std::size_t v = 0; v < voidOrder_.size(); ++v) {
+        voidOrder_[v] = static_cast<std::int32_t>(v);
+    }
+    std::sort(voidOrder_.begin(), voidOrder_.end(), [this](std::int32_t a, std::int32_t b) {
+        return voidBoxes_[a][0] < voidBoxes_[b][0];
+    });
 }
 
 void SceneRenderer::fitToCell(QSize viewport) {
@@ -319,6 +329,12 @@ int SceneRenderer::voidCellAt(QPointF screenPoint) const {
 }
 
 void SceneRenderer::render(QPainter& p, QSize viewport) const {
+    if (snapshot_ && drawsOverview(p)) {
+        const WorldBox box = view_.visibleBox(QSizeF(viewport));
+        drawOverview(p, viewport, box);
+        drawOverlays(p, viewport, false, true, true);
+        return;
+    }
     renderBackground(p, viewport);
     if (snapshot_) {
         p.save();
@@ -326,6 +342,38 @@ void SceneRenderer::render(QPainter& p, QSize viewport) const {
         p.restore();
     }
     renderOverlays(p, viewport, Overlays::All);
+}
+
+bool SceneRenderer::drawsOverview(const QPainter& p) const {
+    const QPaintEngine* engine = p.paintEngine();
+    return engine && engine->type() == QPaintEngine::Raster && p.worldTransform().isIdentity() &&
+           maxHalfWidth_ * view_.pixelsPerMetre() <= options_.overviewHalfWidth;
+}
+
+void SceneRenderer::drawOverview(QPainter& p, QSize viewport, const WorldBox& box) const {
+    // In device pixels: the layer is copied onto the device pixel for pixel. An opaque
+    // background makes an opaque layer (RGB32), which Qt copies without blending.
+    const double ratio = p.device() ? p.device()->devicePixelRatioF() : 1.0;
+    const QSize pixels(static_cast<int>(std::ceil(viewport.width() * ratio)),
+                       static_cast<int>(std::ceil(viewport.height() * ratio)));
+    const QImage::Format format = options_.background.alpha() == 255
+                                      ? QImage::Format_RGB32
+                                      : QImage::Format_ARGB32_Premultiplied;
+    if (layer_.size() != pixels || layer_.format() != format || !layer_.isDetached()) {
+        layer_ = QImage(pixels, format);
+    }
+    layer_.setDevicePixelRatio(ratio);
+    if (format != QImage::Format_RGB32) {
+        layer_.fill(Qt::transparent); // the background is blended over what is there
+    }
+    {
+        QPainter lp(&layer_);
+        renderBackground(lp, viewport);
+    }
+    PixelCanvas canvas(layer_, ratio);
+    drawGrains(canvas, box);
+    drawVoidCellShading(canvas, box);
+    p.drawImage(QPointF(0.0, 0.0), layer_);
 }
 
 void SceneRenderer::renderBackground(QPainter& p, QSize viewport) const {
@@ -339,20 +387,27 @@ void SceneRenderer::renderBackground(QPainter& p, QSize viewport) const {
 }
 
 void SceneRenderer::renderOverlays(QPainter& p, QSize viewport, Overlays overlays) const {
+    // render() draws the selected grain's outline with the grains.
+    drawOverlays(p, viewport, overlays == Overlays::All, overlays == Overlays::All,
+                 overlays == Overlays::Annotations);
+}
+
+void SceneRenderer::drawOverlays(QPainter& p, QSize viewport, bool voidShading, bool chains,
+                                 bool selectedGrain) const {
     if (!snapshot_) {
         return;
     }
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
     const WorldBox box = view_.visibleBox(QSizeF(viewport));
-    if (overlays == Overlays::Annotations) {
-        drawSelectedGrainOutline(p, box); // render() draws it with the grains
+    if (selectedGrain) {
+        drawSelectedGrainOutline(p, box);
     }
     if (options_.voidCells != VoidCellShading::Off || options_.selectedVoidCell >= 0) {
-        drawVoidCells(p, box, overlays == Overlays::All);
+        drawVoidCells(p, box, voidShading);
     }
     p.setRenderHint(QPainter::Antialiasing, true);
-    if (overlays == Overlays::All && options_.forceChains != ForceChains::Off) {
+    if (chains && options_.forceChains != ForceChains::Off) {
         drawForceChains(p, box);
     }
     if (options_.contactRose) {

@@ -28,6 +28,7 @@
 #include <QPainterPath>
 
 #include "grainlab/ui/colour_maps.h"
+#include "grainlab/ui/pixel_canvas.h"
 
 namespace grainlab::ui {
 namespace {
@@ -142,6 +143,9 @@ const std::vector<std::array<double, 4>>& SceneRenderer::voidEdges() const {
             voidEdges_.push_back(edges[keys[k].second]);
         }
     }
+    // Down the screen (x1 is up): the overview reaches their pixels in order (see drawGrains).
+    std::sort(voidEdges_.begin(), voidEdges_.end(),
+              [](const auto& a, const auto& b) { return a[0] + a[2] < b[0] + b[2]; });
     voidEdgesReady_ = true;
     return voidEdges_;
 }
@@ -262,24 +266,72 @@ std::vector<ChainSegment> SceneRenderer::forceChainSegments(QSize viewport) cons
     return out;
 }
 
+template <class F>
+void SceneRenderer::forEachVisibleVoidImage(int v, const WorldBox& box, F&& f) const {
+    const CellMatrix& h = snapshot_->network.cell;
+    const int images = options_.periodicImages ? 1 : 0;
+    const auto& b = voidBoxes_[v];
+    for (int i = -images; i <= images; ++i) {
+        for (int j = -images; j <= images; ++j) {
+            const double s1 = h[0] * i + h[2] * j, s2 = h[1] * i + h[3] * j;
+            if (b[1] + s1 >= box.min1 && b[0] + s1 <= box.max1 && b[3] + s2 >= box.min2 &&
+                b[2] + s2 <= box.max2) {
+                f(i, j);
+            }
+        }
+    }
+}
+
+void SceneRenderer::drawVoidCellShading(PixelCanvas& canvas, const WorldBox& box) const {
+    // As drawVoidCells(QPainter&) draws the shading: the fills (but the selected cell's), then
+    // each shared edge once, with the colour and alpha of its QPainter outline (a 0.8-pixel
+    // cosmetic pen of alpha 220: a one-pixel line of 0.8 of that alpha).
+    if (options_.voidCells == VoidCellShading::Off) {
+        return;
+    }
+    const CellMatrix& h = snapshot_->network.cell;
+    const int images = options_.periodicImages ? 1 : 0;
+    // The cells down the screen (see drawGrains), with their colours of voidFills().
+    std::vector<QRgb> colour(voidPolygons_.size());
+    for (const VoidFill& fill : voidFills()) {
+        colour[fill.cell] = fill.colour;
+    }
+    std::vector<QPointF> screen;
+    for (const std::int32_t v : voidOrder_) {
+        if (v == options_.selectedVoidCell) {
+            continue;
+        }
+        forEachVisibleVoidImage(v, box, [&](int i, int j) {
+            const double s1 = h[0] * i + h[2] * j, s2 = h[1] * i + h[3] * j;
+            const QPolygonF& polygon = voidPolygons_[v];
+            screen.resize(polygon.size());
+            for (qsizetype k = 0; k < polygon.size(); ++k) {
+                screen[k] = view_.toScreen(polygon[k].x() + s1, polygon[k].y() + s2);
+            }
+            canvas.fillPolygon(screen.data(), static_cast<int>(screen.size()), colour[v]);
+        });
+    }
+    const QRgb edge = qRgba(30, 30, 90, static_cast<int>(std::lround(0.8 * 220)));
+    for (int i = -images; i <= images; ++i) {
+        for (int j = -images; j <= images; ++j) {
+            const double s1 = h[0] * i + h[2] * j, s2 = h[1] * i + h[3] * j;
+            for (const auto& e : voidEdges()) {
+                const double a1 = e[0] + s1, a2 = e[1] + s2, b1 = e[2] + s1, b2 = e[3] + s2;
+                if (std::max(a1, b1) >= box.min1 && std::min(a1, b1) <= box.max1 &&
+                    std::max(a2, b2) >= box.min2 && std::min(a2, b2) <= box.max2) {
+                    canvas.drawLine(view_.toScreen(a1, a2), view_.toScreen(b1, b2), edge);
+                }
+            }
+        }
+    }
+}
+
 void SceneRenderer::drawVoidCells(QPainter& p, const WorldBox& box, bool shading) const {
     const CellMatrix& h = snapshot_->network.cell;
     const int images = options_.periodicImages ? 1 : 0;
     const int selected = options_.selectedVoidCell;
     const int cells = static_cast<int>(voidPolygons_.size());
-    // Calls f(i, j) for each image (i, j) of cell v that reaches into the view.
-    auto forEachVisibleImage = [&](int v, auto&& f) {
-        const auto& b = voidBoxes_[v];
-        for (int i = -images; i <= images; ++i) {
-            for (int j = -images; j <= images; ++j) {
-                const double s1 = h[0] * i + h[2] * j, s2 = h[1] * i + h[3] * j;
-                if (b[1] + s1 >= box.min1 && b[0] + s1 <= box.max1 && b[3] + s2 >= box.min2 &&
-                    b[2] + s2 <= box.max2) {
-                    f(i, j);
-                }
-            }
-        }
-    };
+    auto forEachVisibleImage = [&](int v, auto&& f) { forEachVisibleVoidImage(v, box, f); };
     auto screenPolygon = [&](int v, int i, int j, QPolygonF& screen) {
         const double s1 = h[0] * i + h[2] * j, s2 = h[1] * i + h[3] * j;
         const QPolygonF& polygon = voidPolygons_[v];

@@ -24,6 +24,15 @@
 // order (fills by colour, force chains by force) is gathered once per snapshot into arrays read
 // in sequence.
 //
+// The overview: where no grain is wider than a few pixels (SceneOptions::overviewHalfWidth, 12
+// pixels in half width: the whole reference assembly in a window), thousands of shapes a few
+// pixels wide cost Qt mostly its fixed cost per call. There the grains and the void-cell shading
+// are drawn straight into the pixels of an image (PixelCanvas, the same rules: aliased fills,
+// one-pixel antialiased outlines and edges) in bands down the screen, and the image goes onto
+// the device in one copy; force chains and annotations follow through QPainter. Its picture
+// equals the full drawing's within a stated tolerance at the sizes where it switches
+// (tests/widgets/scene_overview_test.cpp).
+//
 // The implementation is split by what is drawn: scene_renderer.cpp (derived data, colours, hit
 // tests, the order of the layers), scene_renderer_grains.cpp, scene_renderer_overlays.cpp (void
 // cells, force chains) and scene_renderer_decorations.cpp (cell, rose, scale bar, caption).
@@ -33,6 +42,7 @@
 #include <vector>
 
 #include <QColor>
+#include <QImage>
 #include <QPointF>
 #include <QPolygonF>
 #include <QRgb>
@@ -44,6 +54,8 @@
 class QPainter;
 
 namespace grainlab::ui {
+
+class PixelCanvas;
 
 enum class GrainColouring {
     Size,         ///< equivalent diameter, smallest dark to largest light
@@ -95,6 +107,11 @@ struct SceneOptions {
     QColor uniformGrain{150, 150, 160};
     int selectedGrain = -1;
     int selectedVoidCell = -1;
+    /// [pixel] The overview's level of detail: on raster devices (the window's QPainter view,
+    /// PNG images), when no grain is wider than this in half width at the current zoom, the
+    /// grains and the void-cell shading are drawn straight into the pixels (PixelCanvas) instead
+    /// of shape by shape through QPainter, with the same rules. 0: never.
+    double overviewHalfWidth = 12.0;
 };
 
 class SceneRenderer {
@@ -116,6 +133,10 @@ public:
     /// Paints the scene into a viewport of `viewport` pixels (device or logical units of the
     /// painter). Only what is visible is drawn, with outline detail matched to the zoom.
     void render(QPainter& painter, QSize viewport) const;
+    /// Does render() draw the grains and void-cell shading on `painter` as an overview, straight
+    /// into the pixels (a raster device, no transformation, no grain wider than
+    /// SceneOptions::overviewHalfWidth)?
+    bool drawsOverview(const QPainter& painter) const;
     /// The parts of render() below and above the grains, for a view that draws the grains
     /// itself (the OpenGL layer): background and cell; then the overlays (see Overlays).
     void renderBackground(QPainter& painter, QSize viewport) const;
@@ -164,8 +185,22 @@ private:
     int grainScreenOutline(int g, std::array<int, 2> shift, int level, QPointF* screen) const;
     void drawCell(QPainter& p) const;
     void drawSelectedGrainOutline(QPainter& p, const WorldBox& box) const;
+    /// The visible grains and images in drawing order, with their screen outlines.
+    struct GrainItems;
+    GrainItems visibleGrains(const WorldBox& box) const;
     void drawGrains(QPainter& p, const WorldBox& box) const;
+    void drawGrains(PixelCanvas& canvas, const WorldBox& box) const;
+    /// Background, cell, grains and void-cell shading drawn into layer_ with PixelCanvas, then
+    /// onto `p`.
+    void drawOverview(QPainter& p, QSize viewport, const WorldBox& box) const;
+    /// Calls f(i, j) for each periodic image (i, j) of void cell `v` that reaches into `box`.
+    template <class F>
+    void forEachVisibleVoidImage(int v, const WorldBox& box, F&& f) const;
     void drawVoidCells(QPainter& p, const WorldBox& box, bool shading) const;
+    void drawVoidCellShading(PixelCanvas& canvas, const WorldBox& box) const;
+    /// The overlays above the grains; `voidShading`: the void cells' fills and outlines.
+    void drawOverlays(QPainter& p, QSize viewport, bool voidShading, bool chains,
+                      bool selectedGrain) const;
     void drawForceChains(QPainter& p, const WorldBox& box) const;
     /// Calls visit(bin, a1, a2, b1, b2) for every visible force-chain segment, bin by bin.
     template <class Visit>
@@ -209,6 +244,7 @@ private:
     mutable std::vector<std::array<QPolygonF, kOutlineLevels>> outlines_;
     std::vector<QPolygonF> voidPolygons_;          ///< world coordinates
     std::vector<std::array<double, 4>> voidBoxes_; ///< min1, max1, min2, max2
+    std::vector<std::int32_t> voidOrder_;          ///< the cells by increasing min1
     /// The void cells' outline edges, each once [m] (built on first use).
     const std::vector<std::array<double, 4>>& voidEdges() const;
     mutable std::vector<std::array<double, 4>> voidEdges_;
@@ -231,6 +267,8 @@ private:
     mutable VoidCellShading voidFillsShading_ = VoidCellShading::Off; ///< Off: not built
     double meanVoidArea_ = 0;
     std::array<double, 18> roseCounts_{}; ///< contact normals in 10 degree bins
+    /// The overview's picture before it goes onto the painter's device (drawOverview()).
+    mutable QImage layer_;
 };
 
 } // namespace grainlab::ui
