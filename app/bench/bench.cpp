@@ -255,6 +255,10 @@ void addBenchOptions(CLI::App& command, BenchOptions& o) {
                      "frame time with --grains ovals (QPainter, and OpenGL where available)");
     command.add_option("--gui-steps", o.guiSteps, "--gui: timed steps per run")
         ->capture_default_str();
+    command.add_flag("--gui-overlays", o.guiOverlays,
+                     "--gui: the window shows strong force chains and void cells by valence "
+                     "(the whole cell in view) while the engine's slowdown is measured, instead "
+                     "of its default view");
     command.add_option("--experiment", o.experiment, "--gui: experiment whose first test is run")
         ->capture_default_str();
 }
@@ -278,6 +282,10 @@ int runBench(const BenchOptions& o, WindowBench windowBench) {
     }
     if (o.rounds < 1 || o.steps < 1 || o.guiSteps < 1) {
         fmt::print(stderr, "bench: --rounds, --steps and --gui-steps must be >= 1\n");
+        return 2;
+    }
+    if (o.guiOverlays && !o.gui) {
+        fmt::print(stderr, "bench: --gui-overlays belongs to the window bench: add --gui\n");
         return 2;
     }
     const std::vector<int> threadCounts = parseThreads(o.threads);

@@ -40,6 +40,9 @@ struct BenchOptions {
     /// and the scene's frame time with `grains` ovals.
     bool gui = false;
     std::int64_t guiSteps = 100000;
+    /// The window shows strong force chains and void cells by valence (not its default view)
+    /// while the engine's slowdown is measured.
+    bool guiOverlays = false;
     std::string experiment = std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json";
 };
 

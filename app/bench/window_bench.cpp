@@ -12,12 +12,14 @@
 #include <vector>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QImage>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QPainter>
+#include <QThread>
 #include <QTimer>
 #include <QWindow>
 
@@ -28,9 +30,11 @@
 #include "cli/progress_bar.h"
 #include "grainlab/assembly.h"
 #include "grainlab/experiment_file.h"
+#include "grainlab/experiment_runner.h"
 #include "grainlab/scenes/compacted_scene.h"
 #include "grainlab/simulation.h"
 #include "grainlab/ui/gl_scene_layer.h"
+#include "grainlab/ui/scene_options_bar.h"
 #include "grainlab/ui/scene_renderer.h"
 #include "grainlab/ui/scene_view.h"
 #include "gui/main_window.h"
@@ -211,11 +215,18 @@ struct WindowResult {
     std::uint64_t publications = 0;
     std::size_t kept = 0, keptBytes = 0; ///< the chart-hover history at the end
     bool openGL = false;
+    double prepareMs = 0; ///< the GUI thread's mean time preparing a new snapshot
+    double paintMs = 0;   ///< the GUI thread's mean time painting the whole scene
+    std::uint64_t paints = 0;
+    double budgetShare = 0;   ///< the window's picture budget: share of a core
+    double intervalMs = 0;    ///< the budget's spacing of running pictures at the end
+    double pictureCostMs = 0; ///< the last running picture's cost the spacing follows
 };
 
-/// The same steps in the shown main window, as a user runs them (Start).
+/// The same steps in the shown main window, as a user runs them (Start); with `overlays`, the
+/// user has chosen strong force chains and void cells by valence in the scene's options bar.
 WindowResult windowStepsPerSecond(const ExperimentConfig& config, const ResumePoint& resume,
-                                  std::int64_t steps) {
+                                  std::int64_t steps, bool overlays) {
     auto timing = std::make_shared<RunTiming>();
     ui::MainWindow window([&config, &resume, steps, timing](const ExperimentConfig&) {
         return std::make_unique<TimedRun>(ui::makeResumedExperimentRun(config, resume), steps,
@@ -225,6 +236,13 @@ WindowResult windowStepsPerSecond(const ExperimentConfig& config, const ResumePo
     window.resize(1500, 950);
     window.show();
     waitUntilExposed(window);
+    if (overlays) {
+        window.sceneOptionsBar()->forceChainsBox()->setCurrentIndex(int(ui::ForceChains::Strong));
+        window.sceneOptionsBar()->voidCellsBox()->setCurrentIndex(
+            int(ui::VoidCellShading::Valence));
+        QCoreApplication::processEvents();
+    }
+    const ui::SceneView::DrawingTime drawn0 = window.sceneView()->drawingTime();
 
     int pictures = 0;
     const Snapshot* shown = nullptr;
@@ -266,6 +284,17 @@ WindowResult windowStepsPerSecond(const ExperimentConfig& config, const ResumePo
     r.kept = window.controller().history().size();
     r.keptBytes = window.controller().history().bytes();
     r.openGL = window.sceneView()->usesOpenGL();
+    const ui::SceneView::DrawingTime& drawn = window.sceneView()->drawingTime();
+    const std::uint64_t prepared = drawn.snapshots - drawn0.snapshots;
+    r.paints = drawn.paints - drawn0.paints;
+    r.prepareMs = prepared > 0
+                      ? 1e3 * (drawn.prepareSeconds - drawn0.prepareSeconds) / double(prepared)
+                      : 0.0;
+    r.paintMs =
+        r.paints > 0 ? 1e3 * (drawn.paintSeconds - drawn0.paintSeconds) / double(r.paints) : 0.0;
+    r.budgetShare = window.pictureBudget().share();
+    r.intervalMs = window.pictureIntervalMs();
+    r.pictureCostMs = window.pictureCostMs();
     return r;
 }
 
@@ -282,12 +311,16 @@ void benchWindow(const BenchOptions& o, int threads) {
     const ResumePoint resume = shearStart(config);
     const double pressure = config.shear.pressures.front();
     fmt::print("(a) engine speed, headless and in the live window\n");
+    const char* shown =
+        o.guiOverlays ? "the window showing strong force chains and void cells by valence over "
+                        "the grains\n    coloured by size, the whole cell in view (--gui-overlays)"
+                      : "the window with its default display options (colour by size,\n    no "
+                        "force chains, no void cells)";
     fmt::print("    experiment \"{}\" ({}), {} grains, its first test (p = {:g} kPa) from the "
-               "start of its shear,\n    {} steps per run, engine threads: at most {}, {} "
-               "interleaved round(s); the window with its default display options (colour by "
-               "size,\n    no force chains, no void cells)\n",
+               "start of its shear,\n    {} steps per run, engine threads: at most {} ({} used), "
+               "{} interleaved round(s); {}\n",
                config.name, o.experiment, config.assembly.grainCount, pressure / 1e3, o.guiSteps,
-               threads, o.rounds);
+               threads, engineThreads(config), o.rounds, shown);
     // The window keeps QPainter where OpenGL is software (gui/main_window.cpp): measure the
     // OpenGL window too, to show why.
     std::vector<WindowVariant> variants(1);
@@ -312,7 +345,7 @@ void benchWindow(const BenchOptions& o, int threads) {
             if (v.forceOpenGL) {
                 qputenv("GRAINLAB_OPENGL", "1");
             }
-            v.last = windowStepsPerSecond(config, resume, o.guiSteps);
+            v.last = windowStepsPerSecond(config, resume, o.guiSteps, o.guiOverlays);
             qunsetenv("GRAINLAB_OPENGL");
             v.stepsPerSecond.push_back(v.last.stepsPerSecond);
             v.slowdown.push_back(1.0 - v.last.stepsPerSecond / headless.back());
@@ -343,6 +376,14 @@ void benchWindow(const BenchOptions& o, int threads) {
                    100.0 * v.last.publishingShare, v.last.kept,
                    double(v.last.keptBytes) / (1 << 20), 100.0 * median(v.engineCpu),
                    100.0 * median(v.guiCpu));
+        fmt::print(
+            "      the scene on the GUI thread: {:.1f} ms a new picture ({:.1f} ms preparing "
+            "the snapshot, {:.1f} ms painting, {} paints); picture budget {:.0f} % of a "
+            "core ({} processors):\n      a new picture at most every {:.0f} ms at the "
+            "last one's cost of {:.1f} ms (copy, measures, preparation and paint)\n",
+            v.last.prepareMs + v.last.paintMs, v.last.prepareMs, v.last.paintMs, v.last.paints,
+            100.0 * v.last.budgetShare, QThread::idealThreadCount(), v.last.intervalMs,
+            v.last.pictureCostMs);
     }
     std::fflush(stdout);
 }

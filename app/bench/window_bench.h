@@ -6,6 +6,9 @@
 //     charts): the first shear test of an experiment (--experiment, default the quick one) from
 //     a checkpoint taken in memory at the start of its shear, --gui-steps steps per run (default
 //     100 000), --rounds interleaved rounds (headless, window, headless, ...), medians printed.
+//     The window shows its default view, or with --gui-overlays strong force chains and void
+//     cells by valence over the whole cell (the scene being drawn is what the slowdown depends
+//     on); its scene's time per picture on the GUI thread and its picture budget are printed.
 // (b) The scene's frame time on a compacted assembly of --grains ovals (default 8450) with
 //     strong force chains and void cells by valence, at 1000 x 1000 pixels: the QPainter
 //     renderer, and the OpenGL view where the platform has OpenGL (not on `offscreen`).

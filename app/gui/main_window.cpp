@@ -18,10 +18,12 @@
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTabWidget>
+#include <QThread>
 #include <QToolBar>
 #include <QVBoxLayout>
 
 #include "grainlab/experiment_file.h"
+#include "grainlab/experiment_runner.h"
 #include "grainlab/ui/charts_panel.h"
 #include "grainlab/ui/inspector_panel.h"
 #include "grainlab/ui/parameters_panel.h"
@@ -42,6 +44,9 @@ namespace {
 /// shares, so no faster than needed.
 constexpr int kFrameMs = 33;
 constexpr int kChartPeriodMs = 150; ///< charts are replotted at most this often while running
+/// A coarse QTimer may tick up to 5 % (1.7 ms) early: a picture due within this much of a tick
+/// is taken at that tick, not one frame later (which would halve the rate at the 33 ms floor).
+constexpr double kTickSlackMs = 3.0;
 
 QString stateName(RunState state) {
     switch (state) {
@@ -158,6 +163,7 @@ MainWindow::MainWindow(RunMaker maker, QWidget* parent)
     connect(controller_.get(), &SimulationController::stateChanged, this,
             [this](RunState) { refresh(); });
     controller_->setPublishInterval(kFrameMs / 1000.0);
+    clock_.start();
     connect(&timer_, &QTimer::timeout, this, &MainWindow::refresh);
     timer_.start(kFrameMs);
     updateControls(RunState::Idle);
@@ -282,6 +288,7 @@ bool MainWindow::prepareRun() {
         const ExperimentConfig config = parameters_->applied();
         RunMaker maker = maker_;
         controller_->setRunFactory([maker, config] { return maker(config); });
+        setPictureBudget(config);
         return true;
     }
     // The run is what the edited text says, read back by the experiment-file reader: the run
@@ -303,7 +310,22 @@ bool MainWindow::prepareRun() {
     controller_->setRunFactory([config, path, picked] {
         return makeRecordedExperimentRun(config, claimRunFolder(path, !picked));
     });
+    setPictureBudget(config);
     return true;
+}
+
+void MainWindow::setPictureBudget(const ExperimentConfig& config) {
+    runEngineThreads_ = engineThreads(config);
+    setPictureShare(pictureShare_);
+    pictureAtMs_ = -1e300; // the new run's first picture at once
+    controller_->setPublishInterval(kFrameMs / 1000.0);
+}
+
+void MainWindow::setPictureShare(double share) {
+    pictureShare_ = share;
+    budget_ = PictureBudget(
+        share > 0 ? share : PictureBudget::shareFor(runEngineThreads_, QThread::idealThreadCount()),
+        kFrameMs);
 }
 
 void MainWindow::startRun() {
@@ -392,7 +414,22 @@ void MainWindow::refresh() {
     const RunStatus status = controller_->status();
     const SnapshotPtr latest = controller_->latestSnapshot();
     const auto nowMs = QDateTime::currentMSecsSinceEpoch();
-    if (latest && latest != shown_ && !viewingFile_) {
+    const bool running = status.state == RunState::Running;
+    bool due = true;
+    if (running) {
+        // The last picture has been painted by now (its paint was queued when it was taken):
+        // its whole cost spaces the next. The controller publishes no more often either, so
+        // that no picture is copied and measured to be dropped.
+        pictureCostMs_ =
+            scene_->pictureMs() + 1e3 * (status.snapshotSeconds + status.measureSeconds);
+        pictureIntervalMs_ = budget_.intervalMs(pictureCostMs_);
+        controller_->setPublishInterval(pictureIntervalMs_ / 1000.0);
+        due = double(clock_.elapsed()) + kTickSlackMs >= pictureAtMs_ + pictureIntervalMs_;
+    }
+    if (latest && latest != shown_ && !viewingFile_ && due) {
+        if (running) {
+            pictureAtMs_ = double(clock_.elapsed());
+        }
         if (!viewingHistory_) {
             if (shown_ && shown_->step != latest->step) {
                 // Indices of grains and void cells refer to the snapshot they were picked in.

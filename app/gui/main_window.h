@@ -2,23 +2,29 @@
 // The main window: assembles the panels — the live scene with its display options, the charts,
 // the inspector, the run controls and the editable parameters — and wires them to the simulation
 // controller. It computes nothing itself: a 33 ms timer picks the controller's newest snapshot
-// and hands it to the panels (charts at most every 150 ms while running). Hovering a chart shows
-// that moment in the scene: a run file's nearest checkpoint, or the live run's nearest kept
-// snapshot (the controller's history) until the hover ends. A run started here is recorded: it
-// writes a run folder as `grainlab run` does (window_run_folder.h says where), holding the
-// experiment as edited in the Parameters tab (edited_experiment.h), which Save experiment as…
-// writes too. GUI thread only; the run folder is written on the controller's worker thread.
+// and hands it to the panels (charts at most every 150 ms while running). While a run is
+// running, new pictures are spaced by the picture budget (picture_budget.h), so that making and
+// drawing them takes at most a share of a core from the engine; the controller publishes no
+// more often. Paused, stepped and finished pictures, zooming, panning and changed options are
+// shown at once. Hovering a chart shows that moment in the scene: a run file's nearest
+// checkpoint, or the live run's nearest kept snapshot (the controller's history) until the
+// hover ends. A run started here is recorded: it writes a run folder as `grainlab run` does
+// (window_run_folder.h says where), holding the experiment as edited in the Parameters tab
+// (edited_experiment.h), which Save experiment as… writes too. GUI thread only; the run folder
+// is written on the controller's worker thread.
 
 #include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QTimer>
 
 #include "grainlab/experiment.h"
 #include "gui/experiment_run.h"
+#include "gui/picture_budget.h"
 #include "gui/run_file_view.h"
 #include "gui/simulation_controller.h"
 
@@ -83,8 +89,21 @@ public:
     /// Writes editedExperimentText() to `path`. Returns false and sets `error` on failure.
     bool saveExperimentAs(const QString& path, QString* error = nullptr);
 
-    /// Takes the newest snapshot and status from the controller now (what the timer does).
+    /// Takes the newest snapshot and status from the controller now (what the timer does). While
+    /// running, a new snapshot is taken only once the picture budget allows.
     void refresh();
+
+    /// The budget of the current (or last) run's pictures: its share of a core follows the run's
+    /// engine threads and this machine's processors (PictureBudget::shareFor).
+    const PictureBudget& pictureBudget() const { return budget_; }
+    /// Replaces the rule's share of a core by `share`, at once and for the next runs (tests); 0
+    /// returns to the rule.
+    void setPictureShare(double share);
+    /// What the last running picture cost the processor outside the engine's steps [ms] (the
+    /// engine thread's copy, the snapshot thread's measures, the scene's preparation and
+    /// paint), and the spacing of running pictures it gives; 0 before a run.
+    double pictureCostMs() const { return pictureCostMs_; }
+    double pictureIntervalMs() const { return pictureIntervalMs_; }
 
     /// The figure set into `folder` (no dialog), in two parts. At once: scene.<fmt>, every
     /// chart as <name>.<fmt> and each shown test's series as <test>.csv, returned (`error` set on
@@ -148,6 +167,8 @@ private:
     /// Gives the controller the run Start or Step begins; false (and says why) when the edited
     /// parameters cannot make one.
     bool prepareRun();
+    /// The picture budget of a run of `config` (its engine threads, this machine's processors).
+    void setPictureBudget(const ExperimentConfig& config);
     void saveExperimentDialog();
     void chooseRunsFolderDialog();
     void chooseNextRunFolderDialog();
@@ -187,6 +208,13 @@ private:
     bool viewingFile_ = false;    ///< the scene shows a run file's checkpoint, not the live run
     bool viewingHistory_ = false; ///< the scene shows a kept snapshot of the live run (hover)
     QTimer timer_;
+    QElapsedTimer clock_;          ///< monotonic, for the picture budget
+    PictureBudget budget_;         ///< set by prepareRun() for each run
+    int runEngineThreads_ = 1;     ///< the engine threads of the current (or last) run
+    double pictureShare_ = 0;      ///< the test's share of a core, 0: the rule
+    double pictureAtMs_ = -1e300;  ///< clock_ when the last running picture was taken
+    double pictureCostMs_ = 0;     ///< see pictureCostMs()
+    double pictureIntervalMs_ = 0; ///< see pictureIntervalMs()
 
     SceneView* scene_;
     SceneOptionsBar* sceneOptions_;

@@ -35,8 +35,9 @@ std::pair<int, std::string> runCapturing(const std::string& command) {
 }
 
 /// `grainlab bench --gui` on a tiny experiment (120 grains), 400 steps, one round, a scene of
-/// 150 ovals, with `prefix` before the command (the platform).
-std::pair<int, std::string> runTinyGuiBench(const std::string& prefix) {
+/// 150 ovals, with `prefix` before the command (the platform) and `options` after it.
+std::pair<int, std::string> runTinyGuiBench(const std::string& prefix,
+                                            const std::string& options = "") {
     std::ifstream quick(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json");
     std::stringstream text;
     text << quick.rdbuf();
@@ -46,8 +47,8 @@ std::pair<int, std::string> runTinyGuiBench(const std::string& prefix) {
     const std::string path = testing::TempDir() + "grainlab_gui_bench_tiny.json";
     std::ofstream(path) << j.dump(2);
     return runCapturing(fmt::format("{} {} bench --gui --gui-steps 400 --rounds 1 --grains 150 "
-                                    "--experiment {} 2>/dev/null",
-                                    prefix, GRAINLAB_EXE, path));
+                                    "--experiment {} {} 2>/dev/null",
+                                    prefix, GRAINLAB_EXE, path, options));
 }
 
 TEST(GuiBench, RunsOffscreenAndPrintsEveryFigure) {
@@ -57,9 +58,11 @@ TEST(GuiBench, RunsOffscreenAndPrintsEveryFigure) {
     for (const char* expected :
          {"platform offscreen", "(a) engine speed, headless and in the live window", "\"tiny\"",
           "120 grains", "400 steps per run", "round 1: headless", "engine steps/s headless:",
-          "live window: scene drawn with QPainter:", "slowdown", "kept for chart hover",
-          "measured by the snapshot thread in", "of the engine thread's time",
-          "(b) scene frame time: 150 ovals", "QPainter renderer (raster image): whole cell",
+          "the window with its default display options", "live window: scene drawn with QPainter:",
+          "slowdown", "kept for chart hover", "the scene on the GUI thread:", "picture budget",
+          "a new picture at most every", "measured by the snapshot thread in",
+          "of the engine thread's time", "(b) scene frame time: 150 ovals",
+          "QPainter renderer (raster image): whole cell",
           "QPainter renderer, the window's default options",
           "one overlay over the grains, whole cell: void cells",
           "OpenGL view: skipped: the offscreen platform has no OpenGL"}) {
@@ -71,6 +74,25 @@ TEST(GuiBench, RunsOffscreenAndPrintsEveryFigure) {
 }
 
 #ifdef GRAINLAB_WITH_GUI
+TEST(GuiBench, ShowsForceChainsAndVoidCellsInTheWindowWithGuiOverlays) {
+    const auto [code, out] = runTinyGuiBench("QT_QPA_PLATFORM=offscreen", "--gui-overlays");
+    ASSERT_EQ(code, 0) << out;
+    for (const char* expected : {"the window showing strong force chains and void cells by valence",
+                                 "(--gui-overlays)", "live window: scene drawn with QPainter:",
+                                 "the scene on the GUI thread:", "ms painting", "picture budget"}) {
+        EXPECT_NE(out.find(expected), std::string::npos) << expected << " in\n" << out;
+    }
+    EXPECT_EQ(out.find("the window with its default display options"), std::string::npos) << out;
+}
+
+TEST(GuiBench, GuiOverlaysWithoutGuiIsRefused) {
+    const auto [code, out] =
+        runCapturing(fmt::format("{} bench --gui-overlays 2>&1", GRAINLAB_EXE));
+    EXPECT_EQ(code, 2) << out;
+    EXPECT_NE(out.find("--gui-overlays belongs to the window bench: add --gui"), std::string::npos)
+        << out;
+}
+
 TEST(GuiBench, RunsTheOpenGLViewUnderAVirtualXServer) {
     if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0) {
         GTEST_SKIP() << "xvfb-run is not installed";

@@ -46,8 +46,12 @@ TEST(GlSceneLayer, DrawsGrainsWhereTheSnapshotHasThem) {
     view.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
     view.setSnapshot(s);
+    const std::uint64_t paints = view.drawingTime().paints;
     const QImage image = view.glLayer()->grabFramebuffer();
     ASSERT_TRUE(view.glLayer()->shadersReady()) << view.glLayer()->failure().toStdString();
+    // The layer's frame counts as the view's paint, for the window's picture budget.
+    EXPECT_GT(view.drawingTime().paints, paints);
+    EXPECT_GT(view.drawingTime().paintMs, 0.0);
     const SceneRenderer& r = view.renderer();
     for (std::size_t g = 0; g < s->x1.size(); ++g) {
         const QPoint p = r.view().toScreen(s->x1[g], s->x2[g]).toPoint();

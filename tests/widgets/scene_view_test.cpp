@@ -117,6 +117,32 @@ TEST(SceneView, WidgetPaintsTheScene) {
     EXPECT_EQ(QColor(grabbed.pixel(p)).rgb(), w.view.renderer().grainColour(0).rgb());
 }
 
+TEST(SceneView, TimesEachNewSnapshotAndEachPaintOfTheWholeView) {
+    Window w;
+    const SceneView::DrawingTime before = w.view.drawingTime();
+    EXPECT_EQ(before.snapshots, 1u); // the fixture's snapshot
+    EXPECT_GT(before.prepareMs, 0.0);
+    w.view.setSnapshot(testing::unmeasuredCopy(*scene()));
+    EXPECT_EQ(w.view.drawingTime().snapshots, 2u);
+    EXPECT_GT(w.view.drawingTime().prepareSeconds, before.prepareSeconds);
+    w.view.setSnapshot(nullptr); // clearing the scene prepares nothing
+    EXPECT_EQ(w.view.drawingTime().snapshots, 2u);
+    w.view.setSnapshot(scene());
+
+    const std::uint64_t paints = w.view.drawingTime().paints;
+    const QImage grabbed = w.view.grab().toImage(); // a paint of the whole view
+    const SceneView::DrawingTime whole = w.view.drawingTime();
+    EXPECT_EQ(whole.paints, paints + 1);
+    EXPECT_GT(whole.paintMs, 0.0);
+    EXPECT_FALSE(grabbed.isNull());
+    EXPECT_DOUBLE_EQ(w.view.pictureMs(), whole.prepareMs + whole.paintMs);
+    // A clipped paint of a corner says nothing about the next picture: not counted.
+    QImage corner(20, 20, QImage::Format_ARGB32_Premultiplied);
+    w.view.render(&corner, QPoint(), QRegion(0, 0, 20, 20));
+    EXPECT_EQ(w.view.drawingTime().paints, paints + 1);
+    EXPECT_EQ(w.view.drawingTime().paintMs, whole.paintMs);
+}
+
 TEST(SceneView, TellsASoftwareOpenGLRendererFromAGraphicsCard) {
     if (!SceneView::openGLAvailable()) {
         EXPECT_TRUE(SceneView::openGLRenderer().isEmpty());

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include <QElapsedTimer>
 #include <QPainter>
 
 #include "grainlab/ui/polygon_triangulation.h"
@@ -178,6 +179,13 @@ void GlSceneLayer::initializeGL() {
 }
 
 void GlSceneLayer::paintGL() {
+    QElapsedTimer clock;
+    clock.start();
+    paintFrame();
+    emit painted(1e-9 * double(clock.nsecsElapsed()));
+}
+
+void GlSceneLayer::paintFrame() {
     QPainter painter(this);
     if (!ready_) {
         renderer_.render(painter, size());

@@ -3,12 +3,14 @@
 
 #include <cmath>
 
+#include <QElapsedTimer>
 #include <QGuiApplication>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
+#include <QPaintEvent>
 #include <QPainter>
 #include <QWheelEvent>
 
@@ -25,7 +27,16 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent) {
 
 void SceneView::setSnapshot(SnapshotPtr snapshot) {
     const bool first = !renderer_.snapshot();
+    const bool some = snapshot != nullptr;
+    QElapsedTimer clock;
+    clock.start();
     renderer_.setSnapshot(std::move(snapshot));
+    if (some) {
+        const double seconds = 1e-9 * double(clock.nsecsElapsed());
+        drawing_.prepareMs = 1e3 * seconds;
+        drawing_.prepareSeconds += seconds;
+        ++drawing_.snapshots;
+    }
     if (following_ || first) {
         renderer_.fitToCell(size());
     }
@@ -64,12 +75,27 @@ QImage SceneView::renderImage() const {
     return image;
 }
 
-void SceneView::paintEvent(QPaintEvent*) {
+void SceneView::paintEvent(QPaintEvent* event) {
     if (gl_) {
         return; // the OpenGL layer covers the widget
     }
-    QPainter painter(this);
-    renderer_.render(painter, size());
+    QElapsedTimer clock;
+    clock.start();
+    {
+        QPainter painter(this);
+        renderer_.render(painter, size());
+    }
+    // A paint of part of the view (uncovered by another window) is clipped and cheaper: it says
+    // nothing about the next picture.
+    if (QRegion(rect()).subtracted(event->region()).isEmpty()) {
+        notePaint(1e-9 * double(clock.nsecsElapsed()));
+    }
+}
+
+void SceneView::notePaint(double seconds) {
+    drawing_.paintMs = 1e3 * seconds;
+    drawing_.paintSeconds += seconds;
+    ++drawing_.paints;
 }
 
 void SceneView::resizeEvent(QResizeEvent*) {
@@ -148,6 +174,7 @@ bool SceneView::setUseOpenGL(bool use) {
         return false;
     }
     gl_ = new GlSceneLayer(renderer_, this);
+    connect(gl_, &GlSceneLayer::painted, this, &SceneView::notePaint);
     gl_->setGeometry(rect());
     gl_->show();
     return true;

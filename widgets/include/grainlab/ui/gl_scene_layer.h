@@ -38,11 +38,18 @@ public:
     /// Why the shaders failed, if they did.
     const QString& failure() const { return failure_; }
 
+signals:
+    /// A frame was drawn in `seconds` (wall clock of paintGL, for the scene view's picture
+    /// cost).
+    void painted(double seconds);
+
 protected:
     void initializeGL() override;
     void paintGL() override;
 
 private:
+    /// What paintGL draws (paintGL times it).
+    void paintFrame();
     bool buildProgram(QOpenGLShaderProgram& program, const char* vertex, const char* fragment);
     /// Sets the world-to-screen uniforms of `program`.
     void setView(QOpenGLShaderProgram& program);

@@ -5,6 +5,8 @@
 // release without a drag) selects the void cell or grain under the cursor. Optionally the grains
 // are drawn by an OpenGL child layer (gl_scene_layer.h); interaction stays here. GUI thread only.
 
+#include <cstdint>
+
 #include <QWidget>
 
 #include "grainlab/snapshot.h"
@@ -53,6 +55,22 @@ public:
     /// The OpenGL layer, or null.
     GlSceneLayer* glLayer() const { return gl_; }
 
+    /// What drawing the scene costs the GUI thread, wall clock (which also counts what a paint
+    /// waits for on other threads, e.g. software OpenGL's): the main window spaces its running
+    /// pictures by it (picture_budget.h), `grainlab bench --gui` prints it.
+    struct DrawingTime {
+        double prepareMs = 0;        ///< the last setSnapshot() with a snapshot
+        double paintMs = 0;          ///< the last paint of the whole view
+        std::uint64_t snapshots = 0; ///< setSnapshot() calls with a snapshot
+        double prepareSeconds = 0;   ///< their total
+        std::uint64_t paints = 0;    ///< paints of the whole view (QPainter or OpenGL)
+        double paintSeconds = 0;     ///< their total
+    };
+    const DrawingTime& drawingTime() const { return drawing_; }
+    /// One new picture at the current view and options [ms]: the last preparation and the last
+    /// whole paint.
+    double pictureMs() const { return drawing_.prepareMs + drawing_.paintMs; }
+
 signals:
     void grainClicked(int grain);
     void voidCellClicked(int voidCell);
@@ -71,6 +89,7 @@ protected:
 private:
     void handleClick(QPointF point, Qt::KeyboardModifiers modifiers);
     void repaintScene();
+    void notePaint(double seconds);
 
     SceneRenderer renderer_;
     GlSceneLayer* gl_ = nullptr; ///< child covering the widget when OpenGL draws the grains
@@ -78,6 +97,7 @@ private:
     QPointF pressPoint_, lastPoint_;
     bool dragging_ = false;
     bool pressed_ = false;
+    DrawingTime drawing_;
 };
 
 } // namespace grainlab::ui
