@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <QAction>
 #include <QDateTime>
@@ -83,6 +84,21 @@ MainWindow::MainWindow(RunMaker maker, QWidget* parent)
     if (qEnvironmentVariableIsEmpty("GRAINLAB_NO_OPENGL") &&
         (!SceneView::openGLIsSoftware() || !qEnvironmentVariableIsEmpty("GRAINLAB_OPENGL"))) {
         scene_->setUseOpenGL(true);
+    }
+    // GRAINLAB_PICTURE_SHARE: the share of one core a running run's pictures may take, in
+    // place of the rule (PictureBudget::shareFor): lower for fewer pictures and a faster
+    // engine, higher for more pictures.
+    if (const QByteArray share = qgetenv("GRAINLAB_PICTURE_SHARE"); !share.isEmpty()) {
+        bool ok = false;
+        const double value = share.toDouble(&ok);
+        if (ok && value > 0.0 && value <= 1.0) {
+            setPictureShare(value);
+        } else {
+            std::fprintf(stderr,
+                         "grainlab: GRAINLAB_PICTURE_SHARE=%s: allowed values are numbers in "
+                         "(0, 1] (a share of one core); using the rule instead\n",
+                         share.constData());
+        }
     }
     buildActions();
     buildMenus();

@@ -15,7 +15,7 @@ double PictureBudget::shareFor(int engineThreads, int processors) {
     if (std::max(1, engineThreads) < processors) {
         return kFreeCoreShare;
     }
-    return std::min(kFreeCoreShare, kEngineLoss * double(processors));
+    return kEngineLoss;
 }
 
 double PictureBudget::intervalMs(double pictureCostMs) const {

@@ -72,12 +72,23 @@ void SnapshotHistory::add(std::int64_t record, std::shared_ptr<Snapshot> snapsho
     } else if (finisher) {
         finisher->submit(
             std::move(snapshot),
-            [this, record, generation](SnapshotPtr done) { keep(record, generation, done); },
+            [this, record, generation, finisher](SnapshotPtr done) {
+                {
+                    std::lock_guard lock(mutex_);
+                    measureSeconds_ += finisher->lastSeconds(); // set before `done` runs
+                }
+                keep(record, generation, done);
+            },
             false);
     } else {
         addSnapshotMeasures(*snapshot);
         keep(record, generation, std::move(snapshot));
     }
+}
+
+double SnapshotHistory::measureSeconds() const {
+    std::lock_guard lock(mutex_);
+    return measureSeconds_;
 }
 
 void SnapshotHistory::keep(std::int64_t record, std::uint64_t generation, SnapshotPtr snapshot) {

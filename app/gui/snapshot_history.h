@@ -38,6 +38,10 @@ public:
     /// Keeps `snapshot` (not yet shared with anyone) as record `record` (ignored when not
     /// wanted), then thins while over the budget or the count.
     void add(std::int64_t record, std::shared_ptr<Snapshot> snapshot);
+    /// The finisher's time on the measures of the snapshots added so far [s, wall]: the run
+    /// counts it with its copies when it holds the history's cost to the engine (it is taken
+    /// from the engine's processors as much as the copies are).
+    double measureSeconds() const;
     /// Completes unmeasured snapshots on `finisher` (which must outlive the history's use).
     void setFinisher(SnapshotFinisher* finisher);
     /// The kept snapshot of test `test` whose eps1 is nearest `eps1`; when `test` has none, of
@@ -69,6 +73,7 @@ private:
     std::size_t budgetBytes_;
     std::size_t maxCount_;
     std::int64_t stride_ = 1;
+    double measureSeconds_ = 0; ///< see measureSeconds()
     std::size_t bytes_ = 0;
     std::vector<Entry> entries_; ///< by increasing record
     std::uint64_t generation_ = 0; ///< counts clear(): a snapshot finished after one is dropped

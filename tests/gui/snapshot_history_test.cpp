@@ -117,11 +117,16 @@ TEST(SnapshotHistory, KeepsUnmeasuredSnapshotsOnceTheFinisherMeasuredThem) {
         EXPECT_EQ(kept->voidCells[v].grains, complete->voidCells[v].grains);
         EXPECT_DOUBLE_EQ(kept->voidCells[v].area, complete->voidCells[v].area);
     }
-    // Without a finisher, add() measures on the caller's thread.
+    // The finisher's time on them is counted, for the run's cost of the history: at least the
+    // last job's.
+    EXPECT_GE(history.measureSeconds(), finisher.lastSeconds());
+    EXPECT_GT(finisher.lastSeconds(), 0.0);
+    // Without a finisher, add() measures on the caller's thread (in the run's own time).
     SnapshotHistory direct;
     direct.add(0, unmeasuredCopy(*complete, 0));
     ASSERT_EQ(direct.size(), 1u);
     EXPECT_EQ(direct.nearest(complete->test, 0.0)->voidCells.size(), complete->voidCells.size());
+    EXPECT_EQ(direct.measureSeconds(), 0.0);
 }
 
 TEST(SnapshotHistory, ASnapshotMeasuredAfterClearIsDropped) {
