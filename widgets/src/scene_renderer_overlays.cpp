@@ -282,6 +282,24 @@ void SceneRenderer::forEachVisibleVoidImage(int v, const WorldBox& box, F&& f) c
     }
 }
 
+template <class F>
+void SceneRenderer::forEachVisibleVoidEdge(const WorldBox& box, F&& f) const {
+    const CellMatrix& h = snapshot_->network.cell;
+    const int images = options_.periodicImages ? 1 : 0;
+    for (int i = -images; i <= images; ++i) {
+        for (int j = -images; j <= images; ++j) {
+            const double s1 = h[0] * i + h[2] * j, s2 = h[1] * i + h[3] * j;
+            for (const auto& e : voidEdges()) {
+                const double a1 = e[0] + s1, a2 = e[1] + s2, b1 = e[2] + s1, b2 = e[3] + s2;
+                if (std::max(a1, b1) >= box.min1 && std::min(a1, b1) <= box.max1 &&
+                    std::max(a2, b2) >= box.min2 && std::min(a2, b2) <= box.max2) {
+                    f(view_.toScreen(a1, a2), view_.toScreen(b1, b2));
+                }
+            }
+        }
+    }
+}
+
 void SceneRenderer::drawVoidCellShading(PixelCanvas& canvas, const WorldBox& box) const {
     // As drawVoidCells(QPainter&) draws the shading: the fills (but the selected cell's), then
     // each shared edge once, with the colour and alpha of its QPainter outline (a 0.8-pixel
@@ -290,7 +308,6 @@ void SceneRenderer::drawVoidCellShading(PixelCanvas& canvas, const WorldBox& box
         return;
     }
     const CellMatrix& h = snapshot_->network.cell;
-    const int images = options_.periodicImages ? 1 : 0;
     // The cells down the screen (see drawGrains), with their colours of voidFills().
     std::vector<QRgb> colour(voidPolygons_.size());
     for (const VoidFill& fill : voidFills()) {
@@ -312,23 +329,11 @@ void SceneRenderer::drawVoidCellShading(PixelCanvas& canvas, const WorldBox& box
         });
     }
     const QRgb edge = qRgba(30, 30, 90, static_cast<int>(std::lround(0.8 * 220)));
-    for (int i = -images; i <= images; ++i) {
-        for (int j = -images; j <= images; ++j) {
-            const double s1 = h[0] * i + h[2] * j, s2 = h[1] * i + h[3] * j;
-            for (const auto& e : voidEdges()) {
-                const double a1 = e[0] + s1, a2 = e[1] + s2, b1 = e[2] + s1, b2 = e[3] + s2;
-                if (std::max(a1, b1) >= box.min1 && std::min(a1, b1) <= box.max1 &&
-                    std::max(a2, b2) >= box.min2 && std::min(a2, b2) <= box.max2) {
-                    canvas.drawLine(view_.toScreen(a1, a2), view_.toScreen(b1, b2), edge);
-                }
-            }
-        }
-    }
+    forEachVisibleVoidEdge(box, [&](QPointF a, QPointF b) { canvas.drawLine(a, b, edge); });
 }
 
 void SceneRenderer::drawVoidCells(QPainter& p, const WorldBox& box, bool shading) const {
     const CellMatrix& h = snapshot_->network.cell;
-    const int images = options_.periodicImages ? 1 : 0;
     const int selected = options_.selectedVoidCell;
     const int cells = static_cast<int>(voidPolygons_.size());
     auto forEachVisibleImage = [&](int v, auto&& f) { forEachVisibleVoidImage(v, box, f); };
@@ -394,19 +399,8 @@ void SceneRenderer::drawVoidCells(QPainter& p, const WorldBox& box, bool shading
         p.setRenderHint(QPainter::Antialiasing, true);
         std::vector<QLineF> lines;
         lines.reserve(voidEdges().size());
-        for (int i = -images; i <= images; ++i) {
-            for (int j = -images; j <= images; ++j) {
-                const double s1 = h[0] * i + h[2] * j, s2 = h[1] * i + h[3] * j;
-                for (const auto& e : voidEdges()) {
-                    const double a1 = e[0] + s1, a2 = e[1] + s2, b1 = e[2] + s1, b2 = e[3] + s2;
-                    if (std::max(a1, b1) >= box.min1 && std::min(a1, b1) <= box.max1 &&
-                        std::max(a2, b2) >= box.min2 && std::min(a2, b2) <= box.max2) {
-                        addLinePieces(lines, view_.toScreen(a1, a2), view_.toScreen(b1, b2),
-                                      screenBox);
-                    }
-                }
-            }
-        }
+        forEachVisibleVoidEdge(
+            box, [&](QPointF a, QPointF b) { addLinePieces(lines, a, b, screenBox); });
         p.drawLines(lines.data(), static_cast<int>(lines.size()));
     }
     if (selected >= 0 && selected < cells) {

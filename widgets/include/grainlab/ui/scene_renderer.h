@@ -196,6 +196,10 @@ private:
     /// Calls f(i, j) for each periodic image (i, j) of void cell `v` that reaches into `box`.
     template <class F>
     void forEachVisibleVoidImage(int v, const WorldBox& box, F&& f) const;
+    /// Calls f(a, b) with the screen end points of each void-cell edge (each shared edge once,
+    /// at each drawn periodic image) that reaches into `box`.
+    template <class F>
+    void forEachVisibleVoidEdge(const WorldBox& box, F&& f) const;
     void drawVoidCells(QPainter& p, const WorldBox& box, bool shading) const;
     void drawVoidCellShading(PixelCanvas& canvas, const WorldBox& box) const;
     /// The overlays above the grains; `voidShading`: the void cells' fills and outlines.
