@@ -6,10 +6,10 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <memory>
-#include <stdexcept>
 #include <exception>
+#include <memory>
 #include <optional>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -279,14 +279,13 @@ WindowResult windowStepsPerSecond(const ExperimentConfig& config, const ResumePo
                              loop.quit();
                          }
                      });
-    const std::uint64_t snapshots0 = window.sceneView()->drawingTime().snapshots;
     const double guiCpu0 = threadCpuSeconds();
     window.startRun();
     const ui::RunState started = window.controller().status().state;
     if (started != ui::RunState::Finished && started != ui::RunState::Failed) {
         loop.exec();
     }
-    const auto pictures = double(window.sceneView()->drawingTime().snapshots - snapshots0);
+    const auto pictures = double(window.sceneView()->drawingTime().snapshots - drawn0.snapshots);
     const double guiCpu = threadCpuSeconds() - guiCpu0;
     const ui::RunStatus status = window.controller().status();
     if (status.state == ui::RunState::Failed) {
