@@ -96,8 +96,8 @@ public:
     /// The budget of the current (or last) run's pictures: its share of a core follows the run's
     /// engine threads and this machine's processors (PictureBudget::shareFor).
     const PictureBudget& pictureBudget() const { return budget_; }
-    /// Replaces the rule's share of a core by `share`, at once and for the next runs (tests); 0
-    /// returns to the rule.
+    /// Replaces the rule's share of a core by `share`, at once and for the next runs (tests, and
+    /// GRAINLAB_PICTURE_SHARE at start); 0 returns to the rule.
     void setPictureShare(double share);
     /// What the last running picture cost the processor outside the engine's steps [ms] (the
     /// engine thread's copy, the snapshot thread's measures, the scene's preparation and
@@ -211,7 +211,7 @@ private:
     QElapsedTimer clock_;          ///< monotonic, for the picture budget
     PictureBudget budget_;         ///< set by prepareRun() for each run
     int runEngineThreads_ = 1;     ///< the engine threads of the current (or last) run
-    double pictureShare_ = 0;      ///< the test's share of a core, 0: the rule
+    double pictureShare_ = 0;      ///< the chosen share of a core, 0: the rule
     double pictureAtMs_ = -1e300;  ///< clock_ when the last running picture was taken
     double pictureCostMs_ = 0;     ///< see pictureCostMs()
     double pictureIntervalMs_ = 0; ///< see pictureIntervalMs()

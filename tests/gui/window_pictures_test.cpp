@@ -44,6 +44,33 @@ bool stillRunning(MainWindow& w) {
     return w.controller().status().state == RunState::Running;
 }
 
+TEST(WindowPictures, GrainlabPictureShareReplacesTheRuleAndNonsenseIsRefused) {
+    struct Unset {
+        ~Unset() { qunsetenv("GRAINLAB_PICTURE_SHARE"); }
+    } unset; // also when an assertion ends the test
+    qputenv("GRAINLAB_PICTURE_SHARE", "0.2");
+    {
+        MainWindow w;
+        EXPECT_DOUBLE_EQ(w.pictureBudget().share(), 0.2);
+        // It holds for the runs started here, whatever their engine threads.
+        w.setExperiment(smallExperiment(0.01));
+        click(w, w.startAction());
+        ASSERT_TRUE(waitFor([&] { return w.controller().status().state != RunState::Idle; }));
+        EXPECT_DOUBLE_EQ(w.pictureBudget().share(), 0.2);
+    }
+    for (const char* bad : {"0", "1.5", "-0.1", "lots"}) {
+        qputenv("GRAINLAB_PICTURE_SHARE", bad);
+        MainWindow w;
+        w.setExperiment(smallExperiment(0.01));
+        click(w, w.startAction());
+        ASSERT_TRUE(waitFor([&] { return w.controller().status().state != RunState::Idle; }));
+        EXPECT_DOUBLE_EQ(w.pictureBudget().share(),
+                         PictureBudget::shareFor(smallExperiment(0.01).parameters.threads,
+                                                 QThread::idealThreadCount()))
+            << bad;
+    }
+}
+
 TEST(WindowPictures, NewPicturesKeepComingWhileRunningWithForceChainsAndVoidCells) {
     const ExperimentConfig config = smallExperiment(0.3); // runs for a while
     MainWindow w;
