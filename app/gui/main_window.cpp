@@ -445,6 +445,7 @@ void MainWindow::refresh() {
     if (latest && latest != shown_ && !viewingFile_ && due) {
         if (running) {
             pictureAtMs_ = double(clock_.elapsed());
+            pictureTakenIntervalMs_ = pictureIntervalMs_;
         }
         if (!viewingHistory_) {
             if (shown_ && shown_->step != latest->step) {

@@ -104,6 +104,11 @@ public:
     /// paint), and the spacing of running pictures it gives; 0 before a run.
     double pictureCostMs() const { return pictureCostMs_; }
     double pictureIntervalMs() const { return pictureIntervalMs_; }
+    /// When the last running picture was taken (the window's own monotonic clock [ms]) and the
+    /// spacing it was taken under: it came no sooner than that spacing after the one before,
+    /// less a timer tick's slack of 3 ms.
+    double runningPictureAtMs() const { return pictureAtMs_; }
+    double runningPictureIntervalMs() const { return pictureTakenIntervalMs_; }
 
     /// The figure set into `folder` (no dialog), in two parts. At once: scene.<fmt>, every
     /// chart as <name>.<fmt> and each shown test's series as <test>.csv, returned (`error` set on
@@ -215,6 +220,7 @@ private:
     double pictureAtMs_ = -1e300;  ///< clock_ when the last running picture was taken
     double pictureCostMs_ = 0;     ///< see pictureCostMs()
     double pictureIntervalMs_ = 0; ///< see pictureIntervalMs()
+    double pictureTakenIntervalMs_ = 0; ///< see runningPictureIntervalMs()
 
     SceneView* scene_;
     SceneOptionsBar* sceneOptions_;
