@@ -2,6 +2,7 @@
 // the polygon (brute force over every pixel), polygons that tile the plane cover each pixel once,
 // the convex walk equals the general fill, blending is Qt's to the bit, and a line's coverage in
 // each column adds up to its alpha.
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -35,14 +36,21 @@ bool centreInside(const std::vector<QPointF>& polygon, int x, int y) {
     return inside;
 }
 
-/// A random star-shaped polygon (simple, often concave) about `centre`.
-std::vector<QPointF> randomPolygon(std::mt19937& rng, QPointF centre, double size, int n) {
+/// `n` random angles in [0, 2 pi), in increasing order: vertex directions going round once.
+std::vector<double> sortedAngles(std::mt19937& rng, int n) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<double> angles(n);
     for (double& a : angles) {
         a = 2.0 * M_PI * unit(rng);
     }
     std::sort(angles.begin(), angles.end());
+    return angles;
+}
+
+/// A random star-shaped polygon (simple, often concave) about `centre`.
+std::vector<QPointF> randomPolygon(std::mt19937& rng, QPointF centre, double size, int n) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const std::vector<double> angles = sortedAngles(rng, n);
     std::vector<QPointF> polygon;
     for (double a : angles) {
         const double r = size * (0.3 + 0.7 * unit(rng));
@@ -54,11 +62,7 @@ std::vector<QPointF> randomPolygon(std::mt19937& rng, QPointF centre, double siz
 /// A convex polygon: points on an ellipse at random angles.
 std::vector<QPointF> randomConvexPolygon(std::mt19937& rng, QPointF centre, double size, int n) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::vector<double> angles(n);
-    for (double& a : angles) {
-        a = 2.0 * M_PI * unit(rng);
-    }
-    std::sort(angles.begin(), angles.end());
+    const std::vector<double> angles = sortedAngles(rng, n);
     const double aspect = 0.4 + 0.6 * unit(rng), turn = 2.0 * M_PI * unit(rng);
     std::vector<QPointF> polygon;
     for (double a : angles) {

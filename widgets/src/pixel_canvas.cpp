@@ -20,11 +20,6 @@ inline std::uint32_t byteMul(std::uint32_t x, std::uint32_t a) {
     return x | t;
 }
 
-/// Source-over of premultiplied `colour` on `dest`.
-inline std::uint32_t over(std::uint32_t colour, std::uint32_t dest) {
-    return colour + byteMul(dest, 255u - qAlpha(colour));
-}
-
 /// A pixel index from a coordinate, clamped to [lo, hi] before the conversion (coordinates far
 /// outside the image must not overflow an int).
 inline int clampedIndex(double v, int lo, int hi) {
@@ -39,14 +34,14 @@ struct Edge {
 } // namespace
 
 PixelCanvas::PixelCanvas(QImage& image, double scale)
-    : image_(image), width_(image.width()), height_(image.height()), scale_(scale) {
+    : width_(image.width()), height_(image.height()), scale_(scale) {
     // Source-over on an opaque pixel leaves it opaque: RGB32's alpha byte stays 0xff.
     if (image.format() != QImage::Format_ARGB32_Premultiplied &&
         image.format() != QImage::Format_RGB32) {
         throw std::invalid_argument("PixelCanvas: the image must be ARGB32_Premultiplied or RGB32");
     }
-    bits_ = image_.bits();
-    stride_ = image_.bytesPerLine();
+    bits_ = image.bits();
+    stride_ = image.bytesPerLine();
 }
 
 void PixelCanvas::fillSpan(int y, int x0, int x1, QRgb premultiplied) {

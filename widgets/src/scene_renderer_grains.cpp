@@ -202,9 +202,8 @@ SceneRenderer::GrainItems SceneRenderer::visibleGrains(const WorldBox& box) cons
 
 void SceneRenderer::drawGrains(PixelCanvas& canvas, const WorldBox& box) const {
     // As drawGrains(QPainter&) draws on raster devices: the fills, then the outlines.
-    // In bands of rows down the screen, not by colour: the pixels a grain touches are then
-    // mostly in the processor's cache from the grain before (in colour order they are scattered
-    // over the whole picture, and reaching them took most of the time).
+    // In bands of rows down the screen, not by colour (no brush to change here): the pixels a
+    // grain touches are then near those of the grain before.
     const Snapshot& s = *snapshot_;
     const GrainItems g = visibleGrains(box);
     std::vector<std::pair<std::int64_t, std::int32_t>> order(g.items.size());
