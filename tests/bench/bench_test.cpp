@@ -97,7 +97,8 @@ TEST(GuiBench, RunsTheOpenGLViewUnderAVirtualXServer) {
     if (std::system("command -v xvfb-run > /dev/null 2>&1") != 0) {
         GTEST_SKIP() << "xvfb-run is not installed";
     }
-    const auto [code, out] = runTinyGuiBench("xvfb-run -a");
+    // The virtual X server's child must not inherit a caller's QT_QPA_PLATFORM (offscreen).
+    const auto [code, out] = runTinyGuiBench("env -u QT_QPA_PLATFORM xvfb-run -a");
     ASSERT_EQ(code, 0) << out;
     EXPECT_NE(out.find("platform xcb"), std::string::npos) << out;
     // Xvfb's OpenGL is Mesa's software rasteriser: the window keeps QPainter, and the bench
