@@ -211,9 +211,11 @@ void LimitKernel::buildIndex() {
     for (std::size_t p = 0; p < pairs; ++p) {
         secondPairs_[next[second_[p]]++] = std::int32_t(p);
     }
-    reach_.resize(pairs);
+    radiusFirst_.resize(pairs);
+    radiusSecond_.resize(pairs);
     for (std::size_t p = 0; p < pairs; ++p) {
-        reach_[p] = radius_[first_[p]] + radius_[second_[p]];
+        radiusFirst_[p] = radius_[first_[p]];
+        radiusSecond_[p] = radius_[second_[p]];
     }
     for (auto* v : {&force1_, &force2_, &torqueFirst_, &torqueSecond_}) {
         v->assign(pairs, 0.0);
@@ -236,8 +238,8 @@ void LimitKernel::pairForces(double dt) {
     const double* v1 = v1_.data();
     const double* v2 = v2_.data();
     const double* omega = omega_.data();
-    const double* radius = radius_.data();
-    const double* reach = reach_.data();
+    const double* radiusA = radiusFirst_.data();
+    const double* radiusB = radiusSecond_.data();
     double* stored = tangential_.data();
     double* force1 = force1_.data();
     double* force2 = force2_.data();
@@ -256,7 +258,7 @@ void LimitKernel::pairForces(double dt) {
             // The engine's disk geometry and contact law: the same inline kernels its pair loop
             // calls, in the same order.
             const double d2 = l1 * l1 + l2 * l2;
-            const ContactGeometry g = diskContact(radius[i], reach[p], l1, l2);
+            const ContactGeometry g = diskContact(radiusA[p], radiusA[p] + radiusB[p], l1, l2);
             const bool touching = (d2 > 0.0) & (g.overlap > 0.0);
             const double n1 = g.normalX, n2 = g.normalY, t1 = -n2, t2 = n1;
             const double pA1 = g.pointX, pA2 = g.pointY;

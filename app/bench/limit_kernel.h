@@ -55,7 +55,8 @@ private:
     std::vector<double> keepTrans_, pushTrans_, keepRot_, pushRot_; ///< v <- keep v + push F
     // Neighbour list (pairs sorted by first grain) with its reference positions and cell.
     std::vector<std::int32_t> first_, second_, shift1_, shift2_;
-    std::vector<double> reach_, tangential_; ///< r_i + r_j [m]; stored f_t [N]
+    /// r_i and r_j in pair order [m] (as the engine: no radius gathered); stored f_t [N].
+    std::vector<double> radiusFirst_, radiusSecond_, tangential_;
     std::vector<double> force1_, force2_, torqueFirst_, torqueSecond_;
     std::vector<std::int32_t> firstStart_, secondStart_, secondPairs_;
     std::vector<double> reference1_, reference2_;

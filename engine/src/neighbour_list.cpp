@@ -186,12 +186,11 @@ void Simulation::buildPairIndex() {
     for (auto* v : {&pairForce1_, &pairForce2_, &torqueFirst_, &torqueSecond_, &normalForce_}) {
         v->assign(pairCount, 0.0);
     }
-    pairReach_.resize(pairCount);
-    pairSmallerWidth_.resize(pairCount);
+    pairHalfWidthFirst_.resize(pairCount);
+    pairHalfWidthSecond_.resize(pairCount);
     for (std::size_t p = 0; p < pairCount; ++p) {
-        const double a = halfWidth_[first[p]], b = halfWidth_[second[p]];
-        pairReach_[p] = a + b;
-        pairSmallerWidth_[p] = 2.0 * std::min(a, b);
+        pairHalfWidthFirst_[p] = halfWidth_[first[p]];
+        pairHalfWidthSecond_[p] = halfWidth_[second[p]];
     }
     if (skinInUse_ <= 0.0) {
         // A restart: the skin of the stored list, from the cell it was built in.

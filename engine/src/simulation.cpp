@@ -218,6 +218,21 @@ void Simulation::derive() {
         maxHalfWidth_ = std::max(maxHalfWidth_, s.halfWidth);
         minWidth = std::min(minWidth, s.width);
     }
+    // One form (the reference study's ovals): every grain's arcs become its half-width times
+    // the form's unit arcs, the numbers the one-form pair loop computes from the half-width
+    // alone; the scalar paths read them from the tables.
+    oneForm_ = !allDisks_ && !p.perGrainArcs && oneFormArcs(s_.shapes, unitArcs_);
+    if (oneForm_) {
+        for (std::size_t i = 0; i < n; ++i) {
+            const double a = halfWidth_[i];
+            endOffset_[i] = a * unitArcs_.endOffset;
+            sideOffset_[i] = a * unitArcs_.sideOffset;
+            endRadius_[i] = a * unitArcs_.endRadius;
+            sideRadius_[i] = a * unitArcs_.sideRadius;
+            cosJunction_[i] = unitArcs_.cosJunction;
+            sinJunction_[i] = unitArcs_.sinJunction;
+        }
+    }
     skin_ = p.neighbourSkin > 0 ? p.neighbourSkin : 0.1 * minWidth;
     prepareIntegration();
 }
@@ -228,37 +243,41 @@ double Simulation::cellArea() const {
 
 void Simulation::evaluateForces(bool increment) {
     const bool frictional = s_.parameters.friction > 0.0;
+    const auto run = [&]<PairShape Shape>() {
+        if (frictional) {
+            increment ? pairForces<Shape, true, true>() : pairForces<Shape, true, false>();
+        } else {
+            pairForces<Shape, false, false>();
+        }
+    };
     if (allDisks_) {
-        if (frictional) {
-            increment ? pairForces<true, true, true>() : pairForces<true, true, false>();
-        } else {
-            pairForces<true, false, false>();
-        }
+        run.operator()<PairShape::Disk>();
+    } else if (oneForm_) {
+        run.operator()<PairShape::OneForm>();
     } else {
-        if (frictional) {
-            increment ? pairForces<false, true, true>() : pairForces<false, true, false>();
-        } else {
-            pairForces<false, false, false>();
-        }
+        run.operator()<PairShape::PerGrain>();
     }
 }
 
 ContactGeometry Simulation::pairGeometry(std::size_t p, double l1, double l2) const {
     const std::int32_t i = s_.pairs.first[p], j = s_.pairs.second[p];
     if (allDisks_) {
-        return diskContact(halfWidth_[i], pairReach_[p], l1, l2);
+        return diskContact(halfWidth_[i], pairHalfWidthFirst_[p] + pairHalfWidthSecond_[p], l1,
+                           l2);
     }
     const OvalShape& A = s_.shapes[s_.grains.shape[i]];
     const OvalShape& B = s_.shapes[s_.grains.shape[j]];
     const ArcTables tables{endOffset_.data(),  sideOffset_.data(),  endRadius_.data(),
                            sideRadius_.data(), cosJunction_.data(), sinJunction_.data(),
                            cosTheta_.data(),   sinTheta_.data()};
-    return decideOvalPair(tables, A, B, i, j, l1, l2, pairSmallerWidth_[p],
+    const double smallerWidth = 2.0 * std::min(pairHalfWidthFirst_[p], pairHalfWidthSecond_[p]);
+    return decideOvalPair(tables, A, B, i, j, l1, l2, smallerWidth,
                           s_.parameters.allArcPairs);
 }
 
-template <bool Disk, bool Frictional, bool Increment>
+template <Simulation::PairShape Shape, bool Frictional, bool Increment>
 void Simulation::pairForces() {
+    constexpr bool Disk = Shape == PairShape::Disk;
     const std::size_t pairCount = s_.pairs.size();
     const int blocks = reductionBlocks(pairCount);
     const ContactLawParameters law =
@@ -282,7 +301,6 @@ void Simulation::pairForces() {
     const double* v1 = s_.grains.v1.data();
     const double* v2 = s_.grains.v2.data();
     const double* omega = s_.grains.omega.data();
-    const double* halfWidth = halfWidth_.data();
     const double* cosT = cosTheta_.data();
     const double* sinT = sinTheta_.data();
     const double* endOffset = endOffset_.data();
@@ -291,8 +309,12 @@ void Simulation::pairForces() {
     const double* sideRadius = sideRadius_.data();
     const double* cosJ = cosJunction_.data();
     const double* sinJ = sinJunction_.data();
-    const double* pairReach = pairReach_.data();
-    const double* pairSmallerWidth = pairSmallerWidth_.data();
+    const double* halfWidthFirst = pairHalfWidthFirst_.data();
+    const double* halfWidthSecond = pairHalfWidthSecond_.data();
+    // One form: the arcs at half-width 1, the same for every grain.
+    const double unitEnd = unitArcs_.endOffset, unitSide = unitArcs_.sideOffset;
+    const double unitEndRadius = unitArcs_.endRadius, unitSideRadius = unitArcs_.sideRadius;
+    const double unitCosJ = unitArcs_.cosJunction, unitSinJ = unitArcs_.sinJunction;
     double* force1 = pairForce1_.data();
     double* force2 = pairForce2_.data();
     double* torqueA = torqueFirst_.data();
@@ -329,13 +351,23 @@ void Simulation::pairForces() {
             const double k1 = shift1[p], k2 = shift2[p];
             const double l1 = x1[j] + h0 * k1 + h2 * k2 - x1[i];
             const double l2 = x2[j] + h1 * k1 + h3 * k2 - x2[i];
-            const double reach = pairReach[p], smaller = pairSmallerWidth[p];
+            // The half-widths in pair order (no gather); the same sum and minimum as before.
+            const double aI = halfWidthFirst[p], aJ = halfWidthSecond[p];
+            const double reach = aI + aJ, smaller = 2.0 * std::min(aI, aJ);
             const double d2 = l1 * l1 + l2 * l2, reach2 = reach * reach;
             const bool near = (d2 < reach2) & (d2 > 0.0);
             // No aggregate is copied in this loop: GCC 12 vectorises none that does.
             const QuadrantContact q = [&] {
                 if constexpr (Disk) {
-                    return QuadrantContact{diskContact(halfWidth[i], reach, l1, l2), false};
+                    return QuadrantContact{diskContact(aI, reach, l1, l2), false};
+                } else if constexpr (Shape == PairShape::OneForm) {
+                    // No gather for the arcs (the tables' twelve): the half-widths times the
+                    // unit arcs are the tables' numbers (derive()).
+                    return ovalContactQuadrant(aI * unitEnd, aI * unitSide, aI * unitEndRadius,
+                                               aI * unitSideRadius, unitCosJ, unitSinJ, cosT[i],
+                                               sinT[i], aJ * unitEnd, aJ * unitSide,
+                                               aJ * unitEndRadius, aJ * unitSideRadius, unitCosJ,
+                                               unitSinJ, cosT[j], sinT[j], l1, l2, smaller);
                 } else {
                     return ovalContactQuadrant(
                         endOffset[i], sideOffset[i], endRadius[i], sideRadius[i], cosJ[i], sinJ[i],
@@ -387,10 +419,11 @@ void Simulation::pairForces() {
                 const double l2 = x2[j] + h1 * k1 + h3 * k2 - x2[i];
                 const OvalShape& A = s_.shapes[s_.grains.shape[i]];
                 const OvalShape& B = s_.shapes[s_.grains.shape[j]];
+                const double smallerWidth = 2.0 * std::min(halfWidthFirst[p], halfWidthSecond[p]);
                 const ArcTables tables{endOffset, sideOffset, endRadius, sideRadius,
                                        cosJ,      sinJ,       cosT,      sinT};
                 ContactGeometry c =
-                    decideOvalPair(tables, A, B, i, j, l1, l2, pairSmallerWidth[p], fullOvalTest);
+                    decideOvalPair(tables, A, B, i, j, l1, l2, smallerWidth, fullOvalTest);
                 const bool touching = c.overlap > 0.0;
                 if (!touching) {
                     c = ContactGeometry{0.0, 1.0, 0.0, 0.0, 0.0}; // finite numbers for the law
@@ -412,7 +445,7 @@ void Simulation::pairForces() {
                 e2 += r.e2;
                 slip += r.slipWork;
                 if (touching) {
-                    excess = std::max(excess, c.overlap - overlapLimit * pairSmallerWidth[p]);
+                    excess = std::max(excess, c.overlap - overlapLimit * smallerWidth);
                 }
             }
         }

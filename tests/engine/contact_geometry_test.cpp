@@ -323,6 +323,82 @@ TEST(ContactGeometry, FacingPairKernelDecidesAsTheQuadrantKernel) {
     EXPECT_GE(shallowDecided, shallow - shallow / 1000);
 }
 
+// One form at several widths: oneFormArcs finds the unit arcs, and a * unit gives each
+// shape's own arcs to round-off (each width's construction, a bisection and an atan2, rounds
+// its own way: up to 3e-15 of a apart); other forms, disks among ovals, or no shapes: no one
+// form.
+TEST(ContactGeometry, OneFormArcsScaleToEachShapesArcs) {
+    for (const OvalClosure closure : {OvalClosure::EqualArea, OvalClosure::EndRadiusRatio}) {
+        for (const double aspect : {0.35, 0.6, 0.9, 1.0}) {
+            std::vector<OvalShape> shapes;
+            for (int k = 0; k <= 10; ++k) {
+                shapes.push_back(makeOval(1e-3 + 1e-4 * k, aspect, closure, 0.3 * aspect));
+            }
+            OvalArcs unit;
+            ASSERT_TRUE(oneFormArcs(shapes, unit)) << "aspect " << aspect;
+            for (const OvalShape& s : shapes) {
+                const OvalArcs own = ovalArcs(s);
+                const double a = s.halfWidth, tight = 1e-14 * a;
+                EXPECT_NEAR(a * unit.endOffset, own.endOffset, tight);
+                EXPECT_NEAR(a * unit.sideOffset, own.sideOffset, tight);
+                EXPECT_NEAR(a * unit.endRadius, own.endRadius, tight);
+                EXPECT_NEAR(a * unit.sideRadius, own.sideRadius, tight);
+                EXPECT_NEAR(unit.cosJunction, own.cosJunction, 1e-14);
+                EXPECT_NEAR(unit.sinJunction, own.sinJunction, 1e-14);
+            }
+        }
+    }
+    OvalArcs unit;
+    EXPECT_FALSE(oneFormArcs({}, unit));
+    EXPECT_FALSE(oneFormArcs({makeOval(1e-3, 0.6), makeOval(2e-3, 0.6 + 1e-9)}, unit));
+    EXPECT_FALSE(oneFormArcs({makeOval(1e-3, 0.6), makeOval(2e-3, 1.0)}, unit));
+    EXPECT_FALSE(oneFormArcs({makeOval(1e-3, 0.6),
+                              makeOval(2e-3, 0.6, OvalClosure::EndRadiusRatio, 0.2)},
+                             unit));
+}
+
+// The engine's one-form kernel (the quadrant kernel on a * unit arcs) against the 16-pair
+// reference on each shape's own arcs, from near-tangent to deep overlaps at every orientation:
+// where it decides, the same contact to round-off (the arcs differ by that much).
+TEST(ContactGeometry, OneFormKernelEqualsSixteenPairReference) {
+    Random random(31);
+    const std::array<double, 3> aspects = {0.35, 0.6, 0.9};
+    int decided = 0, touching = 0;
+    const int trials = 30000;
+    for (int trial = 0; trial < trials; ++trial) {
+        const double aspect = aspects[trial % 3];
+        const double fraction = trial % 4 == 0
+                                    ? (random.uniform() < 0.5 ? -1.0 : 1.0) *
+                                          std::pow(10.0, random.uniform(-12.0, -6.0))
+                                    : random.uniform(-0.05, 0.08);
+        const RandomPair p = pairAtOverlap(random, aspect, aspect, fraction);
+        OvalArcs u;
+        ASSERT_TRUE(oneFormArcs({p.A, p.B}, u));
+        const double cA = std::cos(p.thetaA), sA = std::sin(p.thetaA);
+        const double cB = std::cos(p.thetaB), sB = std::sin(p.thetaB);
+        const double a = p.A.halfWidth, b = p.B.halfWidth;
+        const QuadrantContact q = ovalContactQuadrant(
+            a * u.endOffset, a * u.sideOffset, a * u.endRadius, a * u.sideRadius, u.cosJunction,
+            u.sinJunction, cA, sA, b * u.endOffset, b * u.sideOffset, b * u.endRadius,
+            b * u.sideRadius, u.cosJunction, u.sinJunction, cB, sB, p.dx, p.dy,
+            std::min(p.A.width, p.B.width));
+        const ContactGeometry ref = ovalContactAllPairs(p.A, cA, sA, p.B, cB, sB, p.dx, p.dy);
+        if (q.needsReference) {
+            continue;
+        }
+        ++decided;
+        touching += ref.overlap > 0.0 ? 1 : 0;
+        const double scale = std::min(p.A.width, p.B.width);
+        ASSERT_NEAR(q.geometry.overlap, ref.overlap, 1e-14 * scale) << "trial " << trial;
+        ASSERT_NEAR(q.geometry.normalX, ref.normalX, 1e-12) << "trial " << trial;
+        ASSERT_NEAR(q.geometry.normalY, ref.normalY, 1e-12) << "trial " << trial;
+        ASSERT_NEAR(q.geometry.pointX, ref.pointX, 1e-12 * scale) << "trial " << trial;
+        ASSERT_NEAR(q.geometry.pointY, ref.pointY, 1e-12 * scale) << "trial " << trial;
+    }
+    EXPECT_GT(decided, 0.9 * trials);
+    EXPECT_GT(touching, 0.5 * trials);
+}
+
 TEST(ContactGeometry, JunctionDirectionsAreAdmittedByBothArcs) {
     // Two ovals placed so that the line of centres passes exactly through A's junction normal.
     const OvalShape s = makeOval(1e-3, 0.6);

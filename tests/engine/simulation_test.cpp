@@ -353,6 +353,61 @@ TEST(FastPaths, DiskThroughOvalPathEqualsDiskPath) {
     EXPECT_GT(disk.contactCount(), 300u);
 }
 
+// Ovals of one form at several widths run through the one-form kernel (each grain's arcs its
+// half-width times the form's unit arcs); the per-grain tables of the shapes' own arcs differ
+// from those products by round-off, so both runs must agree to round-off grown by the dynamics.
+TEST(FastPaths, OneFormKernelEqualsPerGrainTables) {
+    SimulationState start = denseAssembly(0.6);
+    start.parameters.friction = 0.5;
+    std::set<double> widths;
+    for (const OvalShape& shape : start.shapes) {
+        widths.insert(shape.width);
+    }
+    ASSERT_GT(widths.size(), 5u) << "the scene must have several widths of the one form";
+    SimulationState viaTables = start;
+    viaTables.parameters.perGrainArcs = true;
+    Simulation form(std::move(start)), tables(std::move(viaTables));
+    EXPECT_TRUE(form.oneFormKernel());
+    EXPECT_FALSE(tables.oneFormKernel());
+    for (Simulation* sim : {&form, &tables}) {
+        sim->setAxisControl(0, {AxisMode::Strain, 1.0, 0});
+        sim->setAxisControl(1, {AxisMode::Stress, 0, 1e5});
+        sim->advance(2000);
+    }
+    const auto& a = form.stateRef().grains;
+    const auto& b = tables.stateRef().grains;
+    double worst = 0, worstAngle = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        worst = std::max({worst, std::fabs(a.x1[i] - b.x1[i]), std::fabs(a.x2[i] - b.x2[i])});
+        worstAngle = std::max(worstAngle, std::fabs(a.theta[i] - b.theta[i]));
+    }
+    EXPECT_LT(worst, 1e-15); // round-off on millimetre positions
+    EXPECT_LT(worstAngle, 1e-11);
+    EXPECT_NEAR(form.stress().s11, tables.stress().s11, 1e-9 * form.stress().s11);
+    EXPECT_EQ(form.contactCount(), tables.contactCount());
+    EXPECT_GT(form.contactCount(), 300u);
+}
+
+TEST(FastPaths, OvalsOfTwoFormsUseThePerGrainTables) {
+    const SimulationParameters p = bareParameters();
+    const Simulation one(makeScene({{1e-3, 1e-3, 0, 0, 0, 0, 1e-3, 0.6},
+                                    {3e-3, 3e-3, 0, 0, 0, 0, 1.5e-3, 0.6}},
+                                   5e-3, 5e-3, p));
+    EXPECT_TRUE(one.oneFormKernel());
+    const Simulation two(makeScene({{1e-3, 1e-3, 0, 0, 0, 0, 1e-3, 0.6},
+                                    {3e-3, 3e-3, 0, 0, 0, 0, 1.5e-3, 0.5}},
+                                   5e-3, 5e-3, p));
+    EXPECT_FALSE(two.oneFormKernel());
+    const Simulation mixed(makeScene({{1e-3, 1e-3, 0, 0, 0, 0, 1e-3, 0.6},
+                                      {3e-3, 3e-3, 0, 0, 0, 0, 1.5e-3, 1.0}},
+                                     5e-3, 5e-3, p));
+    EXPECT_FALSE(mixed.oneFormKernel());
+    const Simulation disks(makeScene({{1e-3, 1e-3, 0, 0, 0, 0, 1e-3, 1.0},
+                                      {3e-3, 3e-3, 0, 0, 0, 0, 1.5e-3, 1.0}},
+                                     5e-3, 5e-3, p));
+    EXPECT_FALSE(disks.oneFormKernel()); // the disk kernel
+}
+
 TEST(NeighbourList, NeverMissesAContactUnderDeformation) {
     // All-pairs brute force (every image) against the engine's contacts, during compaction and
     // shear of small oval assemblies.

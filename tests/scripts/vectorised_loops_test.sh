@@ -2,8 +2,9 @@
 # The engine's pair loops run vectorised in a native build. GCC gives up on a loop silently (a
 # bool ?: in the oval kernel once made every oval step run scalar, 2.9x slower, and only the bench
 # showed it), so this counts the packed (ymm/zmm) instructions in the compiled pair loops of
-# frictional ovals, frictionless ovals and frictional disks: a vectorised loop has hundreds
-# (807 to 912 on an AVX-512 build), a scalar one a few dozen.
+# frictional and frictionless ovals (of one form, and through per-grain arc tables) and
+# frictional disks: a vectorised loop has hundreds (450 to 910 on an AVX-512 build), a scalar
+# one a few dozen.
 # Usage: vectorised_loops_test.sh GRAINLAB_EXECUTABLE
 set -euo pipefail
 exe="$1"
@@ -17,8 +18,11 @@ if ! grep -qw avx2 /proc/cpuinfo; then
 fi
 listing="$(objdump -d --no-show-raw-insn -C "$exe")"
 status=0
-for loop in "pairForces<false, true, true>" "pairForces<false, false, false>" \
-  "pairForces<true, true, true>"; do
+shape="grainlab::Simulation::PairShape"
+# PairShape: 0 disks, 1 ovals of one form, 2 ovals through per-grain tables.
+for loop in "pairForces<($shape)1, true, true>" "pairForces<($shape)1, false, false>" \
+  "pairForces<($shape)2, true, true>" "pairForces<($shape)2, false, false>" \
+  "pairForces<($shape)0, true, true>"; do
   packed=$(awk -v f="$loop() [clone ._omp_fn.0]>:" 'index($0, f) { on = 1; next }
     on && /^$/ { on = 0 } on' <<< "$listing" | grep -cE '%[yz]mm' || true)
   if ((packed >= 200)); then

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "grainlab/oval_shape.h"
 
@@ -122,6 +123,42 @@ inline OvalArcs ovalArcs(const OvalShape& s) {
             s.cosJunction,
             s.sinJunction,
             s.width};
+}
+
+/// Tolerance of oneFormArcs on the arcs at half-width 1: the rounding of one construction at
+/// several widths is ~1e-16; 1e-12 of a millimetre is a femtometre, far below any overlap.
+inline constexpr double kOneFormTolerance = 1e-12;
+
+/// True when every shape is an oval (or disk) of one form: its arcs divided by its half-width
+/// equal those of shape 0 within kOneFormTolerance (an assembly of one aspect ratio and closure
+/// at several widths). Then `unit` holds shape 0's arcs divided by its half-width (the form at
+/// half-width 1, `width` 2), and a grain of half-width a has the arcs a * unit: the engine's pair
+/// loop then reads a alone per grain instead of six numbers of arcs.
+inline bool oneFormArcs(const std::vector<OvalShape>& shapes, OvalArcs& unit) {
+    if (shapes.empty()) {
+        return false;
+    }
+    const auto scaled = [](const OvalShape& s) {
+        const OvalArcs arcs = ovalArcs(s);
+        const double a = s.halfWidth;
+        return OvalArcs{arcs.endOffset / a, arcs.sideOffset / a, arcs.endRadius / a,
+                        arcs.sideRadius / a, arcs.cosJunction, arcs.sinJunction, 2.0};
+    };
+    const OvalArcs first = scaled(shapes.front());
+    for (const OvalShape& s : shapes) {
+        const OvalArcs u = scaled(s);
+        const bool same = std::fabs(u.endOffset - first.endOffset) <= kOneFormTolerance &&
+                          std::fabs(u.sideOffset - first.sideOffset) <= kOneFormTolerance &&
+                          std::fabs(u.endRadius - first.endRadius) <= kOneFormTolerance &&
+                          std::fabs(u.sideRadius - first.sideRadius) <= kOneFormTolerance &&
+                          std::fabs(u.cosJunction - first.cosJunction) <= kOneFormTolerance &&
+                          std::fabs(u.sinJunction - first.sinJunction) <= kOneFormTolerance;
+        if (!same) {
+            return false;
+        }
+    }
+    unit = first;
+    return true;
 }
 
 /// The result of the quadrant kernel: the geometry, and whether the 16-pair reference must

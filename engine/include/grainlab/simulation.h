@@ -68,6 +68,9 @@ public:
     std::int64_t neighbourRebuilds() const { return rebuilds_; }
     /// Grain masses [kg].
     const std::vector<double>& grainMass() const { return mass_; }
+    /// True when the pair loop runs the one-form oval kernel (every shape an oval of one form,
+    /// oneFormArcs; not with the perGrainArcs test switch).
+    bool oneFormKernel() const { return oneForm_; }
 
 private:
     void derive();
@@ -81,7 +84,11 @@ private:
     void updateServo();
     void buildPairIndex();
     void checkOverlaps() const;
-    template <bool Disk, bool Frictional, bool Increment>
+    /// Which contact kernel the pair loop runs: disks; ovals of one form (every grain's arcs
+    /// its half-width times one unit table, so that only the half-width is gathered per grain);
+    /// ovals through their per-grain arc tables.
+    enum class PairShape { Disk, OneForm, PerGrain };
+    template <PairShape Shape, bool Frictional, bool Increment>
     void pairForces();
     /// Contact geometry of pair p with branch vector l, exactly as the pair loop computes it.
     ContactGeometry pairGeometry(std::size_t p, double l1, double l2) const;
@@ -99,17 +106,23 @@ private:
     std::vector<double> dampTrans_, dampRot_;    ///< 2 sqrt(k_n m) [kg/s], 2 sqrt(k_n a^2 I)
     std::vector<double> cosTheta_, sinTheta_;    ///< of the current orientation
     std::vector<double> stepLimit_;              ///< largest travel in one step [m]
-    // Oval arcs per grain (copies of the shape's OvalArcs), read by the vectorised pair loop.
+    // Oval arcs per grain (copies of the shape's OvalArcs, or with one form the half-width times
+    // unitArcs_), read by the vectorised pair loop and the scalar paths.
     std::vector<double> endOffset_, sideOffset_, endRadius_, sideRadius_; ///< [m]
     std::vector<double> cosJunction_, sinJunction_;
+    /// Every shape an oval of one form (oneFormArcs): the arcs of that form at half-width 1.
+    bool oneForm_ = false;
+    OvalArcs unitArcs_;
     // Integration coefficients per grain (prepareIntegration()): v <- keep v + push F, and the
     // damping power factor, for translation and rotation.
     std::vector<double> keepTrans_, pushTrans_, keepRot_,
         pushRot_;                             ///< [-], [s/kg], [-], [s/kg m^2]
     std::vector<double> workTrans_, workRot_; ///< dt beta c [J s^2/m^2], [J s^2]
     // Derived per pair (written by the pair loop, read by the gather in integrate()).
-    // Constant per pair (buildPairIndex()): a_i + a_j, and min(W_i, W_j) [m].
-    std::vector<double> pairReach_, pairSmallerWidth_;
+    // Constant per pair (buildPairIndex()): the half-widths a_i and a_j [m], read in pair order
+    // (the pair loop takes a_i + a_j and min(W_i, W_j) = 2 min(a_i, a_j) from them, and gathers
+    // no half-width).
+    std::vector<double> pairHalfWidthFirst_, pairHalfWidthSecond_;
     std::vector<double> pairForce1_, pairForce2_, torqueFirst_, torqueSecond_, normalForce_;
     // Pairs are sorted by first grain: grain i is first in [firstStart_[i], firstStart_[i+1]);
     // it is second in the pairs secondPairs_[secondStart_[i] .. secondStart_[i+1]).

@@ -69,6 +69,7 @@ struct SimulationParameters {
     int threads = 1;                   ///< OpenMP threads (results are bit-identical for any)
     bool allArcPairs = false;          ///< use the 16-pair reference oval test (tests only)
     bool ovalPathForDisks = false;     ///< run disks through the oval kernel (tests only)
+    bool perGrainArcs = false;         ///< one-form ovals through per-grain tables (tests only)
 };
 
 /// Grain state, structure of arrays. Index = grain id. x1 is the axial direction.
