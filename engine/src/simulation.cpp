@@ -389,8 +389,10 @@ void Simulation::pairForces() {
             // A deferred pair keeps its history for the reference path below.
             stored[p] = reference ? old : r.tangential;
             slides[p - begin] = r.sliding ? 1.0 : 0.0;
-            needsReference[p - begin] = reference ? 1.0 : 0.0;
-            deferred += reference ? 1.0 : 0.0;
+            if constexpr (!Disk) { // disks defer nothing: no store, no sum
+                needsReference[p - begin] = reference ? 1.0 : 0.0;
+                deferred += reference ? 1.0 : 0.0;
+            }
             force1[p] = r.force1;
             force2[p] = r.force2;
             torqueA[p] = r.torqueFirst;
