@@ -3,7 +3,7 @@
 # bool ?: in the oval kernel once made every oval step run scalar, 2.9x slower, and only the bench
 # showed it), so this counts the packed (ymm/zmm) instructions in the compiled pair loops of
 # frictional and frictionless ovals (of one form, and through per-grain arc tables) and
-# frictional disks: a vectorised loop has hundreds (450 to 910 on an AVX-512 build), a scalar
+# frictional disks: a vectorised loop has hundreds (430 to 920 on an AVX-512 build), a scalar
 # one a few dozen.
 # Usage: vectorised_loops_test.sh GRAINLAB_EXECUTABLE
 set -euo pipefail

@@ -125,8 +125,9 @@ inline OvalArcs ovalArcs(const OvalShape& s) {
             s.width};
 }
 
-/// Tolerance of oneFormArcs on the arcs at half-width 1: the rounding of one construction at
-/// several widths is ~1e-16; 1e-12 of a millimetre is a femtometre, far below any overlap.
+/// Tolerance of oneFormArcs on the arcs at half-width 1: one form's constructions at several
+/// widths differ by a few 1e-15 (each rounds its own way); 1e-12 of a millimetre grain is a
+/// femtometre, far below any overlap.
 inline constexpr double kOneFormTolerance = 1e-12;
 
 /// True when every shape is an oval (or disk) of one form: its arcs divided by its half-width
