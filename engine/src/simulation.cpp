@@ -90,6 +90,12 @@ inline PairResponse respond(const ContactGeometry& c, bool touching, double l1, 
     return r;
 }
 
+/// min(W_i, W_j) from the half-widths [m]: the width the overlap guard and the quadrant kernel's
+/// depth limit are fractions of.
+inline double smallerWidth(double halfWidthA, double halfWidthB) {
+    return 2.0 * std::min(halfWidthA, halfWidthB);
+}
+
 /// The per-grain arc tables and orientations the pair loop reads.
 struct ArcTables {
     const double *endOffset, *sideOffset, *endRadius, *sideRadius, *cosJ, *sinJ, *cosT, *sinT;
@@ -100,12 +106,12 @@ struct ArcTables {
 /// for the pairs the vector loop hands on, and the network.
 ContactGeometry decideOvalPair(const ArcTables& t, const OvalShape& A, const OvalShape& B,
                                std::int32_t i, std::int32_t j, double l1, double l2,
-                               double smallerWidth, bool allArcPairs) {
+                               double smaller, bool allArcPairs) {
     if (!allArcPairs) {
         const QuadrantContact q = ovalContactQuadrant(
             t.endOffset[i], t.sideOffset[i], t.endRadius[i], t.sideRadius[i], t.cosJ[i], t.sinJ[i],
             t.cosT[i], t.sinT[i], t.endOffset[j], t.sideOffset[j], t.endRadius[j], t.sideRadius[j],
-            t.cosJ[j], t.sinJ[j], t.cosT[j], t.sinT[j], l1, l2, smallerWidth);
+            t.cosJ[j], t.sinJ[j], t.cosT[j], t.sinT[j], l1, l2, smaller);
         if (!q.needsReference) {
             return q.geometry;
         }
@@ -270,8 +276,8 @@ ContactGeometry Simulation::pairGeometry(std::size_t p, double l1, double l2) co
     const ArcTables tables{endOffset_.data(),  sideOffset_.data(),  endRadius_.data(),
                            sideRadius_.data(), cosJunction_.data(), sinJunction_.data(),
                            cosTheta_.data(),   sinTheta_.data()};
-    const double smallerWidth = 2.0 * std::min(pairHalfWidthFirst_[p], pairHalfWidthSecond_[p]);
-    return decideOvalPair(tables, A, B, i, j, l1, l2, smallerWidth,
+    const double smaller = smallerWidth(pairHalfWidthFirst_[p], pairHalfWidthSecond_[p]);
+    return decideOvalPair(tables, A, B, i, j, l1, l2, smaller,
                           s_.parameters.allArcPairs);
 }
 
@@ -353,7 +359,7 @@ void Simulation::pairForces() {
             const double l2 = x2[j] + h1 * k1 + h3 * k2 - x2[i];
             // The half-widths in pair order (no gather); the same sum and minimum as before.
             const double aI = halfWidthFirst[p], aJ = halfWidthSecond[p];
-            const double reach = aI + aJ, smaller = 2.0 * std::min(aI, aJ);
+            const double reach = aI + aJ, smaller = smallerWidth(aI, aJ);
             const double d2 = l1 * l1 + l2 * l2, reach2 = reach * reach;
             const bool near = (d2 < reach2) & (d2 > 0.0);
             // No aggregate is copied in this loop: GCC 12 vectorises none that does.
@@ -421,11 +427,11 @@ void Simulation::pairForces() {
                 const double l2 = x2[j] + h1 * k1 + h3 * k2 - x2[i];
                 const OvalShape& A = s_.shapes[s_.grains.shape[i]];
                 const OvalShape& B = s_.shapes[s_.grains.shape[j]];
-                const double smallerWidth = 2.0 * std::min(halfWidthFirst[p], halfWidthSecond[p]);
+                const double smaller = smallerWidth(halfWidthFirst[p], halfWidthSecond[p]);
                 const ArcTables tables{endOffset, sideOffset, endRadius, sideRadius,
                                        cosJ,      sinJ,       cosT,      sinT};
                 ContactGeometry c =
-                    decideOvalPair(tables, A, B, i, j, l1, l2, smallerWidth, fullOvalTest);
+                    decideOvalPair(tables, A, B, i, j, l1, l2, smaller, fullOvalTest);
                 const bool touching = c.overlap > 0.0;
                 if (!touching) {
                     c = ContactGeometry{0.0, 1.0, 0.0, 0.0, 0.0}; // finite numbers for the law
@@ -447,7 +453,7 @@ void Simulation::pairForces() {
                 e2 += r.e2;
                 slip += r.slipWork;
                 if (touching) {
-                    excess = std::max(excess, c.overlap - overlapLimit * smallerWidth);
+                    excess = std::max(excess, c.overlap - overlapLimit * smaller);
                 }
             }
         }
@@ -515,7 +521,7 @@ void Simulation::checkOverlaps() const {
     const auto network = contactNetwork();
     for (const ContactRecord& c : network.contacts) {
         const double ratio =
-            c.overlap / (2.0 * std::min(halfWidth_[c.first], halfWidth_[c.second]));
+            c.overlap / smallerWidth(halfWidth_[c.first], halfWidth_[c.second]);
         if (ratio > limit) {
             throw SimulationError(
                 s_.step, c.first,
