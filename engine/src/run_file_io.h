@@ -631,4 +631,8 @@ std::vector<RunWarning> readWarnings(const H5::Group& root);
 /// Opens a run file read-only and checks its format version (a readable one).
 H5::H5File openRunFileToRead(const std::string& path);
 
+/// Reads every group, attribute and dataset of the file once (run_file_walk.cpp); throws
+/// Hdf5Error naming the first object that cannot be read.
+void readWholeFile(const H5::H5File& file);
+
 } // namespace grainlab::hdf5io
