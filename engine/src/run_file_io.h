@@ -145,8 +145,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// After an error of the library on a file: keeps the library's exit from printing after
+/// grainlab's message (run_file_walk.cpp).
+void quietLibraryExitAfterDamage();
+
 [[noreturn]] inline void throwHdf5(const std::string& path, const std::string& what,
                                    const std::string& detail) {
+    quietLibraryExitAfterDamage();
     std::string verdict;
     if (detail.find("checksum") != std::string::npos) {
         verdict = "the file is damaged (a checksum does not match); ";

@@ -5,6 +5,11 @@
 // thread that opens the run file (RunFile::open).
 #include <H5Cpp.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -23,6 +28,7 @@ constexpr int kMaxDepth = 16;
 
 /// Throws the damage of `object` with the HDF5 library's cause.
 [[noreturn]] void damaged(const std::string& object, const std::string& what) {
+    quietLibraryExitAfterDamage();
     std::string cause = hdf5Causes();
     if (cause.empty()) {
         cause = firstHdf5Causes();
@@ -125,6 +131,22 @@ void walk(hid_t group, const std::string& name, int depth) {
 }
 
 } // namespace
+
+void quietLibraryExitAfterDamage() {
+    // A damaged file that the library cannot close makes its exit handler print "HDF5:
+    // infinite loop closing library" and its state after grainlab's own message. Handlers run
+    // in reverse order of registration, and the library registered its own at its first call,
+    // so this one runs first: everything grainlab says is printed by then.
+    static const bool registered = std::atexit([] {
+                                       std::fflush(stderr);
+                                       const int devNull = ::open("/dev/null", O_WRONLY);
+                                       if (devNull >= 0) {
+                                           ::dup2(devNull, STDERR_FILENO);
+                                           ::close(devNull);
+                                       }
+                                   }) == 0;
+    (void)registered;
+}
 
 void readWholeFile(const H5::H5File& file) {
     clearHdf5Causes();

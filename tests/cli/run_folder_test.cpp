@@ -356,8 +356,11 @@ TEST(RunFolder, AResumedRunEndsWithAFileOtherReadersOpenOrIsRefusedNamingTheDama
     struct Damage {
         std::string name;
         std::string bytes;
+        bool elsewhere = true; ///< where the resume itself does not read
     };
-    std::vector<Damage> damages{{"zeros", bytes}, {"bit", bytes}};
+    // And one byte of the first object headers, which the resume reads: refused there.
+    std::vector<Damage> damages{{"zeros", bytes}, {"bit", bytes}, {"header", bytes, false}};
+    damages[2].bytes[2000] = static_cast<char>(damages[2].bytes[2000] ^ 0x5a);
     std::fill_n(damages[0].bytes.begin() + 6937, 4096, '\0');
     damages[1].bytes[first + 11] = static_cast<char>(damages[1].bytes[first + 11] ^ 0x10);
     for (const Damage& d : damages) {
@@ -369,9 +372,16 @@ TEST(RunFolder, AResumedRunEndsWithAFileOtherReadersOpenOrIsRefusedNamingTheDama
         // Only grainlab's own message: no trace of the HDF5 library's error stack.
         EXPECT_EQ(r.output.find("HDF5-DIAG"), std::string::npos) << d.name << "\n" << r.output;
         EXPECT_EQ(r.output.find("#000:"), std::string::npos) << d.name << "\n" << r.output;
+        EXPECT_EQ(r.output.find("closing library"), std::string::npos) << d.name << "\n"
+                                                                       << r.output;
         if (r.status == 0) {
             EXPECT_EQ(otherReadersRefuse(copy / "run.h5", python), "")
                 << d.name << ": resumed to a file other readers cannot open\n"
+                << r.output;
+        } else if (!d.elsewhere) {
+            EXPECT_NE(r.output.find((copy / "run.h5").string() + ": the file is damaged"),
+                      std::string::npos)
+                << d.name << "\n"
                 << r.output;
         } else {
             EXPECT_NE(r.output.find((copy / "run.h5").string() + ": the run file is damaged: /"),
