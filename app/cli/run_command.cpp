@@ -15,6 +15,7 @@
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/run_file.h"
+#include "grainlab/simulation.h"
 
 namespace grainlab {
 namespace {
@@ -59,6 +60,30 @@ TestStop testStopFromEnvironment() {
             fmt::format("GRAINLAB_TEST_STOP_SIGNAL={}: must be KILL, INT or TERM", signalName));
     }
     return stop;
+}
+
+/// What to change in the experiment file when the run stopped for a cause of the experiment
+/// itself (the physics, or a stage's step limit): a resume restarts from a checkpoint with the
+/// same keys and meets the same stop. Empty for a cause outside the experiment (a full disk, a
+/// file that cannot be written), which a resume survives once the cause is removed.
+std::string experimentRemedy(const std::exception& e) {
+    if (const auto* stop = dynamic_cast<const SimulationError*>(&e)) {
+        if (stop->cause.find("overlap") != std::string::npos) {
+            return "lower time_step, or raise stability.max_overlap_fraction (at most 1)";
+        }
+        if (stop->cause.find("runaway") != std::string::npos) {
+            return "lower time_step, or raise stability.max_step_fraction (at most 1)";
+        }
+        return "lower time_step, or raise damping.coefficient";
+    }
+    // The runner's stop at a stage's step limit (a plain runtime_error of ExperimentRunner).
+    const std::string text = e.what();
+    if (text.find("did not reach equilibrium") != std::string::npos) {
+        return text.find("stage 'compaction") != std::string::npos
+                   ? "raise compaction.criterion.max_steps, or relax that criterion"
+                   : "raise shear.equilibration.max_steps, or relax that criterion";
+    }
+    return {};
 }
 
 } // namespace
@@ -232,7 +257,24 @@ int runExperimentCommand(const RunOptions& options) {
         std::signal(SIGINT, previous);
         std::signal(SIGTERM, previousTerm);
         const std::string kept = output.lastCheckpoint();
-        if (kept.empty()) {
+        const std::string remedy = experimentRemedy(e);
+        if (!remedy.empty()) {
+            const std::string experiment =
+                resume || options.experiment.empty() ? std::string("EXPERIMENT.json")
+                                                      : options.experiment;
+            fmt::print(stderr,
+                       "grainlab run: error: {}\nThis stop comes from the experiment itself: a "
+                       "resume would meet it again. In the experiment file (its text is also "
+                       "kept in {} as /experiment): {}; then start a new run: grainlab run {} "
+                       "--out NEW_FOLDER\n",
+                       e.what(), output.runFilePath(), remedy, experiment);
+            if (!kept.empty()) {
+                fmt::print(stderr,
+                           "The run file {} keeps its last good checkpoint {} and every series "
+                           "recorded up to it.\n",
+                           output.runFilePath(), kept);
+            }
+        } else if (kept.empty()) {
             fmt::print(stderr,
                        "grainlab run: error: {}\nThe run file {} holds no checkpoint to continue "
                        "from. Once the cause is removed (e.g. space freed), run the experiment "

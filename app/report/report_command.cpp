@@ -72,7 +72,31 @@ struct LoadedRuns {
     std::vector<ReportSource> sources;
 };
 
+/// Refuses a run folder given twice (under any spelling of its path): its copy would count as
+/// a second seed with the same values, a standard deviation of 0 and a false agreement.
+void refuseRepeatedRuns(const std::vector<std::string>& folders) {
+    std::vector<fs::path> seen;
+    for (const std::string& folder : folders) {
+        fs::path path = fs::absolute(folder).lexically_normal();
+        if (!path.has_filename()) {
+            path = path.parent_path(); // "runs/seed1/" is "runs/seed1"
+        }
+        std::error_code ignored; // a missing folder is refused by name when it is read
+        const fs::path canonical = fs::weakly_canonical(path, ignored);
+        for (std::size_t k = 0; k < seen.size(); ++k) {
+            if (seen[k] == canonical) {
+                throw std::runtime_error(fmt::format(
+                    "{}: this run is given twice (also as {}): a report averages different "
+                    "runs (seeds) of one experiment; give each run once",
+                    folder, folders[k]));
+            }
+        }
+        seen.push_back(canonical);
+    }
+}
+
 LoadedRuns loadRuns(const std::vector<std::string>& folders) {
+    refuseRepeatedRuns(folders);
     LoadedRuns loaded;
     nlohmann::json first;
     for (std::size_t i = 0; i < folders.size(); ++i) {
@@ -186,6 +210,7 @@ std::string figureCsv(const ReportFigure& figure) {
 }
 
 std::string headlineCsv(const std::vector<HeadlineRow>& rows, const PooledFitScatter& pooled) {
+    static constexpr const char* kOneRun = "one run: no scatter";
     std::string out = csvLine({"number", "label", "test", "pressure [Pa]", "unit", "mean", "sd",
                                "runs [-]", "published", "difference", "agrees",
                                "beyond_scatter"});
@@ -197,8 +222,15 @@ std::string headlineCsv(const std::vector<HeadlineRow>& rows, const PooledFitSca
                                    std::to_string(s.count)};
         if (published && s.count) {
             const Comparison c = compare(s, *published);
-            r.insert(r.end(), {published->text, number(c.difference), c.agrees ? "yes" : "no",
-                               c.beyondScatter ? "yes" : "no"});
+            // One run has no scatter to judge by: a difference from a value (or a mean above a
+            // bound) is then neither within nor beyond it, as the page says.
+            const bool judged = s.count >= 2;
+            const std::string agrees = published->upperBound || judged
+                                           ? std::string(c.agrees ? "yes" : "no")
+                                           : std::string(kOneRun);
+            const std::string beyond =
+                judged ? std::string(c.beyondScatter ? "yes" : "no") : std::string(kOneRun);
+            r.insert(r.end(), {published->text, number(c.difference), agrees, beyond});
         } else {
             r.insert(r.end(), {published ? published->text : "", "", "", ""});
         }

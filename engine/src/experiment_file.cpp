@@ -25,11 +25,15 @@ const std::vector<std::string> kCriterionKeys = {"stress_tolerance", "unbalanced
 constexpr std::int64_t kMaxInt = std::numeric_limits<std::int32_t>::max();
 constexpr std::int64_t kMaxInt64 = std::numeric_limits<std::int64_t>::max();
 
+/// Relative tolerance of the derived bounds below: a bound computed from the file's values
+/// (2 x 5e-4 / 1e-6 s = 1000.0000000000001 /s) must let the round number it stands for pass.
+constexpr double kBoundTolerance = 1e-9;
+
 /// Refuses a servo rate cap `rate` [1/s] above kMaxStrainPerStep per time step, the cell strain
 /// per step that the neighbour list follows (checked once the time step is known stable).
 void checkStrainRate(const JsonSection& s, double rate, double timeStep) {
     const double cap = kMaxStrainPerStep / timeStep;
-    if (rate > cap) {
+    if (rate > cap * (1.0 + kBoundTolerance)) {
         const std::string allowed =
             fmt::format("a number in (0, {:g}] [1/s]: with time_step = {:g} s, a cell strain of "
                         "at most {} per step, which the neighbour list follows",
@@ -52,7 +56,7 @@ constexpr double kLateralServoMargin = 2.0;
 /// Refuses a shear whose lateral servo cannot follow the axial loading.
 void checkLateralServoFollows(const JsonSection& s, const ShearSpec& shear, double timeStep) {
     const double axialRate = shear.axialStrainPerStep / timeStep;
-    if (shear.maxStrainRate >= kLateralServoMargin * axialRate) {
+    if (shear.maxStrainRate >= kLateralServoMargin * axialRate * (1.0 - kBoundTolerance)) {
         return;
     }
     const std::string allowed = fmt::format(
@@ -380,7 +384,8 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
         } catch (const std::invalid_argument& e) {
             refuseShape(widthKey, fmt::format("no valid grain of width {} m: {}", w, e.what()));
         }
-        if (!finiteShape(disk, p.density)) {
+        // The width alone (unit density): a density that leaves no finite mass is blamed below.
+        if (!finiteShape(disk, 1.0)) {
             refuseShape(widthKey,
                         fmt::format("a grain of width {} m has no finite area, mass and moment of "
                                     "inertia; widths must be in [{}, {}] m",

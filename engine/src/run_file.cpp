@@ -349,6 +349,21 @@ void RunFile::open(const std::string& experimentText, Mode mode) {
             root.createGroup("samples");
             impl_->flushNow();
         } else {
+            // A resumed run reads only what it continues from; it must not finish a file that
+            // other readers (h5dump, h5py) cannot open for damage elsewhere. Read-only, so that
+            // a refused file is left byte for byte as it was.
+            try {
+                readWholeFile(openRunFileToRead(path));
+            } catch (const Hdf5Error& e) {
+                throw Hdf5Error(fmt::format(
+                    "{}: the run file is damaged: {}. A resumed run would finish a file that "
+                    "other programs (h5dump, h5py) cannot open, so it is not continued, and the "
+                    "file is left as it is. The series up to the interruption stay in the "
+                    "folder's CSV files; to get a complete run file, run the experiment again "
+                    "into a new folder: grainlab run EXPERIMENT.json --out NEW_FOLDER (the "
+                    "experiment's text is in the run file's /experiment)",
+                    path, e.what()));
+            }
             impl_->file =
                 openFile(path, H5F_ACC_RDWR, checksummedAccess(), "opening it for writing");
             checkFormatVersion(impl_->file, path, kRunFileFormatVersion);

@@ -145,8 +145,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// After an error of the library on a file: keeps the library's exit from printing after
+/// grainlab's message (run_file_walk.cpp).
+void quietLibraryExitAfterDamage();
+
 [[noreturn]] inline void throwHdf5(const std::string& path, const std::string& what,
                                    const std::string& detail) {
+    quietLibraryExitAfterDamage();
     std::string verdict;
     if (detail.find("checksum") != std::string::npos) {
         verdict = "the file is damaged (a checksum does not match); ";
@@ -630,5 +635,9 @@ std::vector<RunWarning> readWarnings(const H5::Group& root);
 
 /// Opens a run file read-only and checks its format version (a readable one).
 H5::H5File openRunFileToRead(const std::string& path);
+
+/// Reads every group, attribute and dataset of the file once (run_file_walk.cpp); throws
+/// Hdf5Error naming the first object that cannot be read.
+void readWholeFile(const H5::H5File& file);
 
 } // namespace grainlab::hdf5io

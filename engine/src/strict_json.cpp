@@ -102,9 +102,15 @@ JsonSection::JsonSection(const std::string& file, const Json& node, std::string 
                          std::vector<std::string> known)
     : file_(file), node_(node), path_(std::move(path)), known_(std::move(known)) {
     if (!node_.is_object()) {
-        throw JsonFileError(file_, path_,
-                            fmt::format("{} = {}: must be an object {{...}} (got {})", path_,
-                                        showValue(node_), jsonTypeName(node_)));
+        // The top level has no key to name: say so in words.
+        throw JsonFileError(
+            file_, path_,
+            path_.empty()
+                ? fmt::format("the file must hold one object {{...}} at its top level (got {}: "
+                              "{})",
+                              jsonTypeName(node_), showValue(node_))
+                : fmt::format("{} = {}: must be an object {{...}} (got {})", path_,
+                              showValue(node_), jsonTypeName(node_)));
     }
     for (const auto& item : node_.items()) {
         if (std::find(known_.begin(), known_.end(), item.key()) == known_.end()) {
@@ -271,8 +277,11 @@ void JsonSection::refuseUnknown(const std::string& key) const {
         }
     }
     const std::string where = path_.empty() ? "at the top level" : "in " + path_;
+    // A key "" has no name to show: name the empty string and where it is.
+    const std::string shown = key.empty() ? fmt::format("\"\" (an empty key name) {}", where)
+                                          : path(key);
     fail(key,
-         fmt::format("unknown key {}{}; the keys allowed {} are: {}", path(key),
+         fmt::format("unknown key {}{}; the keys allowed {} are: {}", shown,
                      nearest.empty() ? "" : " (did you mean " + path(nearest) + "?)", where, list));
 }
 
@@ -341,6 +350,20 @@ Json parseStrictJson(const std::string& text, const std::string& file) {
         }
         return true;
     };
+    // JSON text holds no NUL byte (RFC 8259 allows none outside a string, and a string must
+    // escape it as \u0000); the parser would stop at it and accept whatever follows unread.
+    if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+        std::size_t line = 1, column = 1;
+        for (std::size_t i = 0; i < nul; ++i) {
+            column = text[i] == '\n' ? 1 : column + 1;
+            line += text[i] == '\n';
+        }
+        throw JsonFileError(
+            file, "",
+            fmt::format("a NUL byte (0x00) at line {}, column {} (byte {}): a JSON text holds "
+                        "none; the file is damaged or not text",
+                        line, column, nul + 1));
+    }
     Json root;
     try {
         root = Json::parse(text, callback, true, false);

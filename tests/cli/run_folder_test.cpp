@@ -5,6 +5,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdlib>
+#include <vector>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -280,6 +283,116 @@ TEST(RunFolder, ADamagedRunFileIsRefusedByNameOrResumesToTheSameResult) {
     EXPECT_GT(refused, 0);
     std::printf("24 damaged run files: %d refused, %d resumed to the same series\n", refused,
                 resumed);
+    fs::remove_all(base);
+}
+
+/// Exit status of a shell command (its output discarded).
+int shell(const std::string& command) {
+    const int status = std::system((command + " > /dev/null 2>&1").c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// Python with h5py: the system one (a user's environment may lack it).
+std::string pythonWithH5py() {
+    for (const char* python : {"/usr/bin/python3", "python3"}) {
+        if (shell(fmt::format("{} -c 'import h5py'", python)) == 0) {
+            return python;
+        }
+    }
+    return {};
+}
+
+/// Whether h5dump and h5py read every object of the file (each dataset's values too).
+std::string otherReadersRefuse(const fs::path& file, const std::string& python) {
+    std::string out;
+    if (shell(fmt::format("h5dump {}", file.string())) != 0) {
+        out += " h5dump fails;";
+    }
+    const std::string script =
+        "import h5py, sys\n"
+        "f = h5py.File(sys.argv[1], 'r')\n"
+        "def read(name, o):\n"
+        "    list(o.attrs.items())\n"
+        "    if isinstance(o, h5py.Dataset): o[()]\n"
+        "read('/', f)\n"
+        "f.visititems(read)\n";
+    const fs::path scriptFile = file.parent_path() / "read_all.py";
+    std::ofstream(scriptFile) << script;
+    if (shell(fmt::format("{} {} {}", python, scriptFile.string(), file.string())) != 0) {
+        out += " h5py fails;";
+    }
+    fs::remove(scriptFile);
+    return out;
+}
+
+TEST(RunFolder, AResumedRunEndsWithAFileOtherReadersOpenOrIsRefusedNamingTheDamage) {
+    const std::string python = pythonWithH5py();
+    if (shell("h5dump --version") != 0 || python.empty()) {
+        GTEST_SKIP() << "needs h5dump and Python with h5py";
+    }
+    const fs::path base = freshFolder("damaged-whole");
+    const fs::path experiment = writeTinyExperiment(base);
+    const fs::path stopped = base / "stopped";
+    {
+        const std::string command = fmt::format(
+            "GRAINLAB_TEST_STOP_AFTER_STEPS=9000 GRAINLAB_TEST_STOP_SIGNAL=INT {} run {} --out {} "
+            "--quiet > /dev/null 2>&1",
+            GRAINLAB_EXE, experiment.string(), stopped.string());
+        const int status = std::system(command.c_str());
+        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130);
+    }
+    const std::string bytes = readText(stopped / "run.h5");
+    ASSERT_EQ(otherReadersRefuse(stopped / "run.h5", python), "");
+    // Damage where a resume does not read: 4 KB of zeros at byte 6937 (the hostile tester's
+    // file), and one bit deep in the first checkpoint (a resume reads only the last one).
+    const std::vector<std::string> checkpoints = listCheckpoints((stopped / "run.h5").string());
+    ASSERT_GE(checkpoints.size(), 2u);
+    const std::vector<double> x1 =
+        readState((stopped / "run.h5").string(), checkpointGroup(checkpoints.front())).grains.x1;
+    const std::string needle(reinterpret_cast<const char*>(x1.data()), 4 * sizeof(double));
+    const std::size_t first = bytes.find(needle);
+    ASSERT_NE(first, std::string::npos);
+    ASSERT_GT(bytes.size(), 6937u + 4096u);
+    struct Damage {
+        std::string name;
+        std::string bytes;
+        bool elsewhere = true; ///< where the resume itself does not read
+    };
+    // And one byte of the first object headers, which the resume reads: refused there.
+    std::vector<Damage> damages{{"zeros", bytes}, {"bit", bytes}, {"header", bytes, false}};
+    damages[2].bytes[2000] = static_cast<char>(damages[2].bytes[2000] ^ 0x5a);
+    std::fill_n(damages[0].bytes.begin() + 6937, 4096, '\0');
+    damages[1].bytes[first + 11] = static_cast<char>(damages[1].bytes[first + 11] ^ 0x10);
+    for (const Damage& d : damages) {
+        const fs::path copy = base / d.name;
+        fs::copy(stopped, copy, fs::copy_options::recursive);
+        std::ofstream(copy / "run.h5", std::ios::binary | std::ios::trunc) << d.bytes;
+        const Result r = runGrainlab(fmt::format("run --resume {} --quiet", copy.string()));
+        ASSERT_GE(r.status, 0) << d.name << ": crashed\n" << r.output;
+        // Only grainlab's own message: no trace of the HDF5 library's error stack.
+        EXPECT_EQ(r.output.find("HDF5-DIAG"), std::string::npos) << d.name << "\n" << r.output;
+        EXPECT_EQ(r.output.find("#000:"), std::string::npos) << d.name << "\n" << r.output;
+        EXPECT_EQ(r.output.find("closing library"), std::string::npos) << d.name << "\n"
+                                                                       << r.output;
+        if (r.status == 0) {
+            EXPECT_EQ(otherReadersRefuse(copy / "run.h5", python), "")
+                << d.name << ": resumed to a file other readers cannot open\n"
+                << r.output;
+        } else if (!d.elsewhere) {
+            EXPECT_NE(r.output.find((copy / "run.h5").string() + ": the file is damaged"),
+                      std::string::npos)
+                << d.name << "\n"
+                << r.output;
+        } else {
+            EXPECT_NE(r.output.find((copy / "run.h5").string() + ": the run file is damaged: /"),
+                      std::string::npos)
+                << d.name << "\n"
+                << r.output;
+            EXPECT_NE(r.output.find("--out NEW_FOLDER"), std::string::npos) << r.output;
+            EXPECT_EQ(readText(copy / "run.h5"), d.bytes) << d.name << ": the file was changed";
+        }
+        std::printf("%s: %s\n", d.name.c_str(), r.status == 0 ? "resumed" : "refused");
+    }
     fs::remove_all(base);
 }
 

@@ -116,6 +116,29 @@ TEST(RunWarningsCommand, AFailingRunNamesItsLastGoodCheckpoint) {
     EXPECT_NE(out.text.find("keeps its last good checkpoint " + checkpoints.back() + " and"),
               std::string::npos)
         << out.text;
+    // A stop of the experiment itself: the message says which key to change and to start a
+    // new run, never to resume (which would meet the same stop).
+    EXPECT_EQ(out.text.find("--resume"), std::string::npos) << out.text;
+    EXPECT_NE(out.text.find("stability.max_overlap_fraction"), std::string::npos) << out.text;
+    EXPECT_NE(out.text.find("--out NEW_FOLDER"), std::string::npos) << out.text;
+    fs::remove_all(base);
+}
+
+TEST(RunWarningsCommand, AStageStepLimitNamesItsKeyAndSuggestsANewRun) {
+    const fs::path base = test::freshFolder("cli", "maxsteps");
+    nlohmann::json j = fastShear();
+    j["compaction"]["criterion"]["max_steps"] = 300; // no compaction is calm this soon
+    const fs::path experiment = base / "limit.json";
+    std::ofstream(experiment) << j.dump(2);
+    const Output out =
+        grainlab(fmt::format("run {} --out {}", experiment.string(), (base / "out").string()));
+    EXPECT_EQ(out.status, 1) << out.text;
+    EXPECT_NE(out.text.find("did not reach equilibrium"), std::string::npos) << out.text;
+    EXPECT_NE(out.text.find("compaction.criterion.max_steps"), std::string::npos) << out.text;
+    EXPECT_NE(out.text.find("grainlab run " + experiment.string() + " --out NEW_FOLDER"),
+              std::string::npos)
+        << out.text;
+    EXPECT_EQ(out.text.find("--resume"), std::string::npos) << out.text;
     fs::remove_all(base);
 }
 

@@ -5,6 +5,7 @@
 #include <initializer_list>
 #include <string>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -127,6 +128,53 @@ TEST(HostileExperiment, DerivedQuantitiesMustBeFinite) {
     j["grains"].erase("size_classes");
     j["grains"]["widths"] = {1e-3, 1e-300};
     expectRefused(j, "grains.widths[1]", {"grains.widths[1]", "1e-09"});
+}
+
+TEST(HostileExperiment, BytesAfterANulAreRefusedWithItsPosition) {
+    // "{...}\0garbage" was read up to the NUL and accepted.
+    std::string text = minimalExperiment().dump();
+    text += std::string(1, '\0') + "garbage";
+    expectRefusedText(text, "", {"NUL", "line 1, column " + std::to_string(text.find('\0') + 1)});
+    // Inside the object, on a later line, too.
+    text = minimalExperiment().dump(2);
+    const std::size_t at = text.find("\n") + 1;
+    text.insert(at, std::string(1, '\0'));
+    expectRefusedText(text, "", {"NUL", "line 2, column 1", fmt::format("byte {}", at + 1)});
+}
+
+TEST(HostileExperiment, AnEmptyKeyOrANonObjectFileIsNamedInWords) {
+    // "bad.json:  = [1,2]: must be an object" and "unknown key ;" named nothing.
+    expectRefusedText("[1, 2]", "", {"bad.json: the file must hold one object", "top level",
+                                     "got an array"});
+    Json j = minimalExperiment();
+    j[""] = 1;
+    expectRefused(j, "", {"unknown key \"\" (an empty key name) at the top level"});
+    j = minimalExperiment();
+    j["grains"][""] = 1;
+    expectRefused(j, "grains.", {"unknown key \"\" (an empty key name) in grains"});
+}
+
+TEST(HostileExperiment, ATinyDensityIsBlamedOnTheDensity) {
+    // density 5e-324 gives no finite mass to a grain whose width is in range: it was blamed on
+    // grains.width_min.
+    Json j = minimalExperiment();
+    j["material"]["density"] = 5e-324;
+    expectRefused(j, "material.density", {"material.density", "mass"});
+}
+
+TEST(HostileExperiment, ARoundRateAtItsDerivedBoundIsAccepted) {
+    // 2 x 5e-4 / 1e-6 s is 1000.0000000000001 in doubles: 1000 /s was refused as "must be at
+    // least 1000 /s".
+    Json j = minimalExperiment();
+    j["time_step"] = 1e-6;
+    j["shear"]["axial_strain_per_step"] = 5e-4;
+    j["shear"]["max_strain_rate"] = 1000;
+    ASSERT_GT(2.0 * 5e-4 / 1e-6, 1000.0); // the rounding the tolerance absorbs
+    const TrapsOff quiet;
+    EXPECT_NO_THROW(parseExperimentText(j.dump(), "ok.json"));
+    // Below the bound by more than a rounding is still refused.
+    j["shear"]["max_strain_rate"] = 999.999;
+    expectRefused(j, "shear.max_strain_rate", {"at least 1000 /s"});
 }
 
 TEST(HostileExperiment, GridGapAndCellShapeAreBounded) {

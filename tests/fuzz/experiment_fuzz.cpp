@@ -3,7 +3,12 @@
 // time limit and a memory limit. Counts crashes (the child died of a signal), hangs (the time
 // limit), memory exhaustion, and the cases refused by the reader, refused by the engine at run
 // time, and run. Exits non-zero on any crash, hang or memory exhaustion, listing the case, its
-// mutation and the file that reproduces it.
+// mutation and the file that reproduces it. A refusal must also say what is wrong in words (no
+// empty key name in its message), and some mutations state what the reader must do with them:
+// bytes after a NUL are refused naming the NUL; a key "" or a top level that is not an object
+// is refused in words; a density too small for a finite mass is blamed on material.density,
+// never on a width; a lateral rate cap of exactly twice the axial strain rate (a round number
+// such as 1000 /s) is not refused as below that bound. A case that breaks one is a failure.
 //
 // Usage:
 //   build/tests/fuzz/experiment_fuzz --cases 2000 --seed 1
@@ -40,7 +45,27 @@ using Json = nlohmann::json;
 using grainlab::ExperimentConfig;
 
 /// Exit codes of a child.
-enum Outcome : int { kRefused = 10, kRan = 11, kRunError = 12, kOutOfMemory = 13 };
+enum Outcome : int {
+    kRefused = 10,
+    kRan = 11,
+    kRunError = 12,
+    kOutOfMemory = 13,
+    kBadRefusal = 14 ///< refused (or accepted) against what the mutation requires
+};
+
+/// What the reader must do with a mutant beyond not crashing.
+struct Expectation {
+    bool mustRefuse = false;
+    std::string mention;                 ///< a refusal's message must hold this
+    std::vector<std::string> blameOneOf; ///< a refusal must blame one of these keys
+    std::string neverBlamed;             ///< a refusal must not blame this key
+};
+
+struct Mutant {
+    std::string text;
+    std::string what; ///< the mutation, for the report
+    Expectation expect;
+};
 
 /// Accepted files with more grains than this run with grains.count set to kRunGrains instead, so
 /// that every case stays small (the rest of the mutation is still exercised).
@@ -66,8 +91,71 @@ public:
         return std::uniform_int_distribution<std::size_t>(0, n - 1)(random_);
     }
 
-    /// A mutant of `text` and a description of the mutation.
-    std::pair<std::string, std::string> mutate(const std::string& text) {
+    /// A mutant of `text`, a description of the mutation and what the reader must do with it.
+    Mutant mutate(const std::string& text) {
+        const std::size_t kind = below(14);
+        if (kind >= 10) {
+            return special(kind, text);
+        }
+        const auto [out, what] = mutateAny(text);
+        return {out, what, {}};
+    }
+
+private:
+    /// Mutations with a required outcome (issue 24, items 6 to 8).
+    Mutant special(std::size_t kind, const std::string& text) {
+        Json root = Json::parse(text);
+        if (kind == 10) { // bytes after a NUL: the parser must not stop at it and accept
+            std::string out = root.dump(1);
+            const std::size_t at = below(2) == 0 ? out.size() : out.rfind('}');
+            out.insert(at, std::string(1, '\0') + "garbage}{");
+            Expectation e;
+            e.mustRefuse = true;
+            e.mention = "NUL";
+            return {out, fmt::format("NUL and garbage at byte {}", at), e};
+        }
+        if (kind == 11) { // a key "" somewhere, or a top level that is not an object
+            std::vector<Json::json_pointer> leaves, objects;
+            collect(root, Json::json_pointer(), leaves, objects);
+            const std::size_t pick = below(objects.size() + 1);
+            Expectation e;
+            e.mustRefuse = true;
+            if (pick == objects.size()) {
+                const Json tops[] = {Json::array({1, 2}), Json(3), Json("text"), Json(nullptr)};
+                const Json top = tops[below(std::size(tops))];
+                e.mention = "top level";
+                return {top.dump(), fmt::format("the whole file = {}", top.dump()), e};
+            }
+            root[objects[pick]][""] = 1;
+            e.mention = "empty key name";
+            return {root.dump(1), fmt::format("key \"\" added to {}", objects[pick].to_string()),
+                    e};
+        }
+        if (kind == 12) { // a density too small for a finite mass: never a width's fault
+            static const double kDensities[] = {5e-324, 1e-320, 1e-310, 1e-300, 1e-200};
+            const double d = kDensities[below(std::size(kDensities))];
+            root["material"]["density"] = d;
+            Expectation e;
+            e.blameOneOf = {"material.density", "time_step"};
+            return {root.dump(1), fmt::format("/material/density = {}", d), e};
+        }
+        // kind 13: the lateral rate cap at exactly twice the axial strain rate, written as the
+        // round number a user would write: never refused as below that bound.
+        static const double kPerStep[] = {5e-4, 2.5e-4, 1e-4, 3e-5, 7e-6, 1.1e-6, 3e-7};
+        const double perStep = kPerStep[below(std::size(kPerStep))];
+        const double dt = root["time_step"].get<double>();
+        const double bound = std::stod(fmt::format("{:.12g}", 2.0 * perStep / dt));
+        root["shear"]["axial_strain_per_step"] = perStep;
+        root["shear"]["max_strain_rate"] = bound;
+        Expectation e;
+        e.neverBlamed = "shear.max_strain_rate";
+        return {root.dump(1),
+                fmt::format("/shear/axial_strain_per_step = {}, /shear/max_strain_rate = {}",
+                            perStep, bound),
+                e};
+    }
+
+    std::pair<std::string, std::string> mutateAny(const std::string& text) {
         const std::size_t kind = below(10);
         if (kind == 0) { // truncation
             const std::size_t at = below(text.size());
@@ -147,7 +235,6 @@ public:
         return {root.dump(1), fmt::format("{} = {}", leaf.to_string(), v)};
     }
 
-private:
     static void collect(const Json& j, const Json::json_pointer& at,
                         std::vector<Json::json_pointer>& leaves,
                         std::vector<Json::json_pointer>& objects) {
@@ -168,8 +255,30 @@ private:
     std::mt19937_64 random_;
 };
 
+/// Why a refusal breaks the expectation or does not say in words what is wrong ("" if fine).
+std::string badRefusal(const grainlab::ExperimentFileError& e, const Expectation& expect) {
+    const std::string what = e.what();
+    // An empty key path printed as if it were a name: "FILE:  = ...", "unknown key ;".
+    for (const char* empty : {":  =", "key ;", "key  ", "key (did"}) {
+        if (what.find(empty) != std::string::npos) {
+            return fmt::format("a message with an empty name (\"{}\")", empty);
+        }
+    }
+    if (!expect.mention.empty() && what.find(expect.mention) == std::string::npos) {
+        return fmt::format("the message does not say \"{}\"", expect.mention);
+    }
+    if (!expect.blameOneOf.empty() && std::find(expect.blameOneOf.begin(), expect.blameOneOf.end(),
+                                                e.keyPath) == expect.blameOneOf.end()) {
+        return fmt::format("blamed on {}", e.keyPath.empty() ? "no key" : e.keyPath);
+    }
+    if (!expect.neverBlamed.empty() && e.keyPath == expect.neverBlamed) {
+        return fmt::format("blamed on {}", e.keyPath);
+    }
+    return {};
+}
+
 /// The child: read, and if accepted run a few steps. Never returns.
-[[noreturn]] void runCase(const std::string& text, const Options& o) {
+[[noreturn]] void runCase(const std::string& text, const Expectation& expect, const Options& o) {
     const rlimit memory{kMemoryLimit, kMemoryLimit};
     setrlimit(RLIMIT_AS, &memory);
     alarm(static_cast<unsigned>(o.timeout));
@@ -178,10 +287,18 @@ private:
         try {
             config = grainlab::parseExperimentText(text, "mutant.json");
         } catch (const grainlab::ExperimentFileError& e) {
+            if (const std::string bad = badRefusal(e, expect); !bad.empty()) {
+                std::fprintf(stderr, "  bad refusal (%s): %s\n", bad.c_str(), e.what());
+                std::_Exit(kBadRefusal);
+            }
             if (o.verbose) {
                 std::fprintf(stderr, "  refused: %s\n", e.what());
             }
             std::_Exit(kRefused);
+        }
+        if (expect.mustRefuse) {
+            std::fprintf(stderr, "  accepted, but the mutation must be refused\n");
+            std::_Exit(kBadRefusal);
         }
         if (config.assembly.grainCount > kMaxRunGrains) {
             Json j = Json::parse(text);
@@ -270,10 +387,13 @@ int main(int argc, char** argv) {
         return 2;
     }
     Mutator mutator(o.seed);
-    int refused = 0, ran = 0, runErrors = 0, crashes = 0, hangs = 0, outOfMemory = 0;
+    int refused = 0, ran = 0, runErrors = 0, crashes = 0, hangs = 0, outOfMemory = 0,
+        badRefusals = 0;
     for (int c = 0; c < o.cases; ++c) {
         const auto& [name, text] = presets[mutator.below(presets.size())];
-        const auto [mutant, what] = mutator.mutate(text);
+        const Mutant m = mutator.mutate(text);
+        const std::string& mutant = m.text;
+        const std::string& what = m.what;
         std::fflush(stdout);
         const pid_t child = fork();
         if (child < 0) {
@@ -281,7 +401,7 @@ int main(int argc, char** argv) {
             return 2;
         }
         if (child == 0) {
-            runCase(mutant, o);
+            runCase(mutant, m.expect, o);
         }
         int status = 0;
         waitpid(child, &status, 0);
@@ -306,6 +426,10 @@ int main(int argc, char** argv) {
             case kRunError:
                 ++runErrors;
                 break;
+            case kBadRefusal:
+                ++badRefusals;
+                failure = "refusal against the mutation's requirement";
+                break;
             case kOutOfMemory:
                 ++outOfMemory;
                 failure = "out of memory";
@@ -329,7 +453,9 @@ int main(int argc, char** argv) {
         }
     }
     fmt::print("experiment_fuzz: {} cases, seed {}: {} refused by the reader, {} ran {} steps, {} "
-               "stopped by the engine with an error; {} crashes, {} hangs, {} out of memory\n",
-               o.cases, o.seed, refused, ran, o.steps, runErrors, crashes, hangs, outOfMemory);
-    return crashes + hangs + outOfMemory > 0 ? 1 : 0;
+               "stopped by the engine with an error; {} crashes, {} hangs, {} out of memory, "
+               "{} bad refusals\n",
+               o.cases, o.seed, refused, ran, o.steps, runErrors, crashes, hangs, outOfMemory,
+               badRefusals);
+    return crashes + hangs + outOfMemory + badRefusals > 0 ? 1 : 0;
 }

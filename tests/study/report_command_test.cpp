@@ -4,6 +4,7 @@
 // bands equal the mean and standard deviation computed from the two runs' series, the fit's
 // coefficients equal a hand least-squares fit, and (with the window) the void-cell pictures show
 // cells.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -11,6 +12,7 @@
 
 #include <sys/wait.h>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #ifdef GRAINLAB_WITH_GUI
@@ -207,6 +209,53 @@ TEST_F(Reproduce, VoidCellPicturesShowCells) {
     }
 }
 #endif
+
+TEST_F(Reproduce, ARunGivenTwiceIsRefusedNamingIt) {
+    ASSERT_EQ(status_, 0);
+    const fs::path seed1 = *folder_ / "study" / "runs" / "ref-seed1";
+    const fs::path out = *folder_ / "twice";
+    const std::string log = folder_->string() + "-twice.log";
+    // The same folder under a second spelling (a trailing slash, a "." in it) is the same run.
+    const std::string again = (seed1.parent_path() / "." / "ref-seed1").string() + "/";
+    EXPECT_EQ(run(fmt::format("{} report {} {} --out {} > {} 2>&1", GRAINLAB_EXE, seed1.string(),
+                              again, out.string(), log)),
+              1);
+    EXPECT_NE(text(log).find(again + ": this run is given twice (also as " + seed1.string()),
+              std::string::npos)
+        << text(log);
+    EXPECT_FALSE(fs::exists(out / "headline.csv"));
+    fs::remove(log);
+}
+
+TEST_F(Reproduce, OneRunsHeadlineTableJudgesNoScatterAsItsPageDoes) {
+    ASSERT_EQ(status_, 0);
+    const fs::path out = *folder_ / "one";
+    ASSERT_EQ(run(fmt::format("{} report {} --out {} > /dev/null 2>&1", GRAINLAB_EXE,
+                              (*folder_ / "study" / "runs" / "ref-seed1").string(),
+                              out.string())),
+              0);
+    const auto table = readCsv(out / "headline.csv");
+    ASSERT_GT(table.size(), 1u);
+    const int published = columnOf(table[0], "published"), agrees = columnOf(table[0], "agrees"),
+              beyond = columnOf(table[0], "beyond_scatter"), runs = columnOf(table[0], "runs [-]");
+    ASSERT_GE(std::min({published, agrees, beyond, runs}), 0);
+    int judged = 0;
+    for (std::size_t r = 1; r < table.size(); ++r) {
+        const auto& row = table[r];
+        if (row.size() <= std::size_t(beyond) || row[published].empty() || row[runs] != "1") {
+            continue;
+        }
+        // One run: never "beyond the scatter" (σ = 0), as report.md says.
+        EXPECT_EQ(row[beyond], "one run: no scatter") << row[0] << " " << row[2];
+        if (row[0] != "I_uf_mean") {
+            EXPECT_EQ(row[agrees], "one run: no scatter") << row[0] << " " << row[2];
+        } else {
+            EXPECT_TRUE(row[agrees] == "yes" || row[agrees] == "no") << row[agrees];
+        }
+        ++judged;
+    }
+    EXPECT_GT(judged, 0);
+}
 
 TEST(Report, RefusesRunsOfDifferentExperimentsAndUnfinishedRuns) {
     const fs::path folder = freshFolder("report-refusals");
