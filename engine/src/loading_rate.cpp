@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "grainlab/assembly.h"
+#include "grainlab/measures.h"
 
 namespace grainlab {
 
@@ -20,8 +21,14 @@ double meanGrainDiameter(const ExperimentConfig& config) {
 }
 
 double shearInertialNumber(const ExperimentConfig& config, double pressure) {
-    return config.shear.axialStrainPerStep / config.parameters.timeStep *
-           meanGrainDiameter(config) * std::sqrt(config.parameters.density / pressure);
+    return inertialNumber(config.shear.axialStrainPerStep / config.parameters.timeStep,
+                          meanGrainDiameter(config), config.parameters.density, pressure);
+}
+
+double axialStrainRateFor(const ExperimentConfig& config, double inertial, double pressure) {
+    // inertialNumber() is linear in the rate: the rate of I = 1, scaled.
+    return inertial /
+           inertialNumber(1.0, meanGrainDiameter(config), config.parameters.density, pressure);
 }
 
 std::optional<std::string> inertialNumberWarning(const ExperimentConfig& config, double pressure) {

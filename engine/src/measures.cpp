@@ -247,12 +247,11 @@ StressMeasures stressMeasures(const Stress& stress) {
     return s;
 }
 
-double inertialNumber(double strainRate1, double strainRate2, double diameter, double density,
-                      double pressure) {
+double inertialNumber(double axialStrainRate, double diameter, double density, double pressure) {
     if (!(pressure > 0.0) || !(density > 0.0)) {
         return 0.0;
     }
-    return std::fabs(strainRate1 - strainRate2) * diameter * std::sqrt(density / pressure);
+    return std::fabs(axialStrainRate) * diameter * std::sqrt(density / pressure);
 }
 
 MeasureSet computeMeasures(const ContactNetwork& network, const MeasureOptions& options) {
@@ -328,7 +327,7 @@ std::vector<double> seriesRow(const MeasureSet& m, const RecordInputs& in) {
     fabric(row, m.strongWeak.weak);
     row.push_back(m.strongWeak.strong.contacts);
     row.push_back(m.unbalancedForce);
-    row.push_back(inertialNumber(in.strainRate1, in.strainRate2, diameter, in.density, s.p));
+    row.push_back(inertialNumber(in.strainRate1, diameter, in.density, s.p));
     row.insert(row.end(), {in.energies.kinetic, in.energies.elastic, in.energies.frictionWork,
                            in.energies.dampingWork});
     if (row.size() != seriesColumns().size() - 1) {

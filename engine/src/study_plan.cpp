@@ -213,9 +213,8 @@ std::string applySetting(const std::string& baseText, const std::string& baseSou
         if (inertial != levels.end()) {
             // At the lowest confining pressure sheared, where the inertial number is largest.
             const double p = *std::min_element(c.shear.pressures.begin(), c.shear.pressures.end());
-            const double rate = inertial->second.number /
-                                (meanGrainDiameter(c) * std::sqrt(c.parameters.density / p));
-            child(j, "shear")["axial_strain_per_step"] = rate * dt;
+            child(j, "shear")["axial_strain_per_step"] =
+                axialStrainRateFor(c, inertial->second.number, p) * dt;
         }
         if (skin != levels.end()) {
             j["neighbour_skin"] = skin->second.number * c.assembly.widths.front();

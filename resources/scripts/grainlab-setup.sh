@@ -30,7 +30,7 @@ packages=(
   libeigen3-dev libhdf5-dev hdf5-tools nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri
-  python3-h5py python3-matplotlib python3-numpy
+  python3-h5py python3-matplotlib python3-numpy python3-pandas
 )
 
 if ! command -v dpkg-query > /dev/null 2>&1; then

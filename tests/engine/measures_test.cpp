@@ -209,9 +209,10 @@ TEST(Measures, StressInvariantsAndInertialNumber) {
     EXPECT_EQ(stressMeasures(Stress{0, 0, 0}).qOverP, 0.0);
     EXPECT_EQ(stressMeasures(Stress{-1, -3, 0}).phiDeg, 0.0);
     EXPECT_NEAR(stressMeasures(Stress{10, -1, 0}).phiDeg, 90.0, 1e-12); // |q/p| > 1 clamped
-    // I = |0.2 - (-0.2)| * 1e-3 * sqrt(2650 / 1e5).
-    EXPECT_NEAR(inertialNumber(0.2, -0.2, 1e-3, 2650, 1e5), 0.4e-3 * std::sqrt(0.0265), 1e-15);
-    EXPECT_EQ(inertialNumber(0.2, 0, 1e-3, 2650, 0), 0.0);
+    // I = |0.2| * 1e-3 * sqrt(2650 / 1e5): the axial rate alone, either sign.
+    EXPECT_NEAR(inertialNumber(0.2, 1e-3, 2650, 1e5), 0.2e-3 * std::sqrt(0.0265), 1e-15);
+    EXPECT_NEAR(inertialNumber(-0.2, 1e-3, 2650, 1e5), 0.2e-3 * std::sqrt(0.0265), 1e-15);
+    EXPECT_EQ(inertialNumber(0.2, 1e-3, 2650, 0), 0.0);
 }
 
 TEST(Measures, SeriesColumnsFollowTheSpec) {
@@ -331,7 +332,8 @@ TEST(Measures, SeriesRowPutsEachValueUnderItsColumn) {
     EXPECT_EQ(value("Hwdev"), 0.1);
     EXPECT_EQ(value("N_strong"), 40);
     EXPECT_EQ(value("I_uf"), 0.42);
-    EXPECT_NEAR(value("inertial_number"), 0.3 * 1.5e-3 * std::sqrt(2650 / 100e3), 1e-15);
+    // The axial rate 0.2 /s only: the lateral -0.1 /s is not part of I.
+    EXPECT_NEAR(value("inertial_number"), 0.2 * 1.5e-3 * std::sqrt(2650 / 100e3), 1e-15);
     EXPECT_EQ(value("E_kin"), 1.0);
     EXPECT_EQ(value("E_elastic"), 2.0);
     EXPECT_EQ(value("W_friction"), 4.0);

@@ -18,7 +18,9 @@
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/loading_rate.h"
+#include "grainlab/measures.h"
 #include "grainlab/run_file.h"
+#include "grainlab/study_plan.h"
 #include "grainlab/time_step.h"
 
 namespace grainlab {
@@ -94,6 +96,55 @@ TEST(RunWarnings, AShearAboveTheQuasiStaticLimitIsWarnedAboutOnceInTheRunFileToo
     EXPECT_TRUE(runToTheEnd(slow, (dir / "slow.h5").string()).empty());
     EXPECT_TRUE(readWarnings((dir / "slow.h5").string()).empty());
     fs::remove_all(dir);
+}
+
+// One inertial number: the series column, the warning and the study's knob, on a test at the
+// start of its shear (mean stress = confining pressure, axial rate = strain per step / step).
+TEST(RunWarnings, ColumnWarningAndKnobShareOneInertialNumber) {
+    const std::string base = smallQuick().dump();
+    const double pressure = 25e3; // the lowest shear pressure of smallQuick()
+    for (const double level :
+         {0.5 * kQuasiStaticInertialNumber, 2.0 * kQuasiStaticInertialNumber}) {
+        KnobLevel knob;
+        knob.number = level;
+        const ExperimentConfig c = parseExperimentText(
+            applySetting(base, "quick.json", {{KnobKind::InertialNumber, knob}}, 1), "made.json");
+        // The knob sets the rate that the warning reads back.
+        const double warned = shearInertialNumber(c, pressure);
+        EXPECT_NEAR(warned, level, 1e-12 * level);
+        EXPECT_EQ(inertialNumberWarning(c, pressure).has_value(),
+                  level > kQuasiStaticInertialNumber);
+        // The column, on the record of that state: a lateral rate does not enter I.
+        RecordInputs in;
+        in.stress = {pressure, pressure, 0.0};
+        in.strainRate1 = c.shear.axialStrainPerStep / c.parameters.timeStep;
+        in.strainRate2 = -0.4 * in.strainRate1;
+        in.meanDiameter = meanGrainDiameter(c);
+        in.density = c.parameters.density;
+        const std::vector<double> row = seriesRow(MeasureSet{}, in);
+        std::size_t k = 0;
+        for (const SeriesColumn& column : seriesColumns()) {
+            if (column.name == "inertial_number") {
+                break;
+            }
+            k += column.text ? 0 : 1;
+        }
+        EXPECT_NEAR(row.at(k), warned, 1e-12 * warned);
+        // Under a higher mean stress (the axial stress up during shear) the column is lower.
+        in.stress = {3.0 * pressure, pressure, 0.0};
+        EXPECT_LT(seriesRow(MeasureSet{}, in).at(k), warned);
+    }
+}
+
+// The default preset is quasi-static at every pressure it shears: it does not warn about itself.
+TEST(RunWarnings, TheQuickPresetIsQuasiStatic) {
+    const ExperimentConfig c =
+        readExperimentFile(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json");
+    ASSERT_FALSE(c.shear.pressures.empty());
+    for (const double p : c.shear.pressures) {
+        EXPECT_LE(shearInertialNumber(c, p), kQuasiStaticInertialNumber) << p;
+        EXPECT_FALSE(inertialNumberWarning(c, p)) << p;
+    }
 }
 
 TEST(RunWarnings, ATimeStepNearTheLimitIsWarnedAboutAtTheStart) {

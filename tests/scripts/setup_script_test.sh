@@ -81,9 +81,10 @@ grep -q "not root and has no sudo" "$work/err" || fail "no root, no sudo: no rea
 setup FAKE_MISSING=1 FAKE_UID=0 > /dev/null || fail "root: exit status $?"
 grep -q "^apt-get install -y build-essential" "$FAKE_LOG" || fail "root: no apt-get install"
 grep -q "^sudo" "$FAKE_LOG" && fail "root: sudo was used"
-# The Python example's packages (resources/scripts/plot_run.py and its test).
-grep -q "^apt-get install -y .*python3-h5py python3-matplotlib python3-numpy" "$FAKE_LOG" ||
-  fail "root: the Python packages are not installed: $(cat "$FAKE_LOG")"
+# The Python example's packages (resources/scripts/plot_run.py and its test), and pandas, which
+# the snippets of docs/formats.md import (tests/scripts/doc_snippets_test.sh runs them).
+grep -q "^apt-get install -y .*python3-h5py python3-matplotlib python3-numpy python3-pandas" \
+  "$FAKE_LOG" || fail "root: the Python packages are not installed: $(cat "$FAKE_LOG")"
 rm -rf "$work/user/grainlab-quick"
 
 # Another user with sudo: through sudo.

@@ -21,10 +21,16 @@ inline constexpr double kQuasiStaticInertialNumber = 3e-4;
 /// with their counts) [m].
 double meanGrainDiameter(const ExperimentConfig& config);
 
-/// The inertial number of a shear test of `config` at confining pressure `pressure` [Pa]: its
-/// axial strain rate (strain per step over the time step) times the mean grain diameter times
-/// sqrt(density / pressure) [-].
+/// The inertial number (inertialNumber() of measures.h) of a shear test of `config` at the
+/// start of its shear at confining pressure `pressure` [Pa], where the mean stress p equals
+/// the confining pressure: its axial strain rate (strain per step over the time step) times
+/// the mean grain diameter times sqrt(density / pressure) [-]. While the axial stress rises
+/// above the confining one p grows, so this is the largest I of the test's shear.
 double shearInertialNumber(const ExperimentConfig& config, double pressure);
+
+/// The axial strain rate [1/s] at which a shear test of `config` at confining pressure
+/// `pressure` [Pa] starts at inertial number `inertial`: the inverse of shearInertialNumber().
+double axialStrainRateFor(const ExperimentConfig& config, double inertial, double pressure);
 
 /// The warning text for a shear test at `pressure` whose inertial number is above
 /// kQuasiStaticInertialNumber; nothing when it is at or below it.

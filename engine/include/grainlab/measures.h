@@ -110,10 +110,10 @@ double voidRatio(const ContactNetwork& network);
 /// Mean of the equivalent diameters sqrt(4 A / pi) [m]; 0 without grains.
 double meanEquivalentDiameter(const ContactNetwork& network);
 StressMeasures stressMeasures(const Stress& stress);
-/// I = |rate1 - rate2| d sqrt(density / p) [-]; 0 when p <= 0. Rates [1/s], d [m],
-/// density [kg/m^3], p [Pa].
-double inertialNumber(double strainRate1, double strainRate2, double diameter, double density,
-                      double pressure);
+/// The inertial number of docs/physics.md, I = |axial strain rate| d sqrt(density / p) [-]:
+/// the one definition that the series column, the quasi-static warning and the study's
+/// inertial-number knob share. 0 when p <= 0. Rate [1/s], d [m], density [kg/m^3], p [Pa].
+double inertialNumber(double axialStrainRate, double diameter, double density, double pressure);
 
 MeasureSet computeMeasures(const ContactNetwork& network, const MeasureOptions& options = {});
 

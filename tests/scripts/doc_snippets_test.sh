@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The Python snippets of the user docs, run as a reader would: each ```python block of
+# docs/formats.md on its own, and the blocks of docs/python.md in order as one script (they build
+# on each other), in a folder whose out/ is a real run of a small experiment (two pressures,
+# 15 and 100 kPa, as the snippets' p100kPa expects). A snippet that raises fails the test.
+# Skipped (exit 77) only when no python3 with h5py, numpy, pandas and matplotlib is found
+# (resources/scripts/grainlab-setup.sh installs them).
+# Usage: doc_snippets_test.sh <grainlab executable> <docs folder> <experiment file>
+set -uo pipefail
+
+grainlab="$1"
+docs="$2"
+experiment="$3"
+
+python=""
+for candidate in /usr/bin/python3 "$(command -v python3 || true)"; do
+  if [[ -n "$candidate" && -x "$candidate" ]] &&
+    "$candidate" -c 'import h5py, numpy, pandas, matplotlib' > /dev/null 2>&1; then
+    python="$candidate"
+    break
+  fi
+done
+if [[ -z "$python" ]]; then
+  echo "SKIPPED: no python3 with h5py, numpy, pandas and matplotlib (Debian: python3-h5py" \
+    "python3-numpy python3-pandas python3-matplotlib)"
+  exit 77
+fi
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+if ! "$grainlab" run "$experiment" --out out --quiet > run.log 2>&1; then
+  echo "FAILED: grainlab run $experiment" >&2
+  cat run.log >&2
+  exit 1
+fi
+
+# Writes block k of a markdown file's ```python blocks to snippet-<name>-<k>.py; prints the count.
+extract() {
+  awk -v prefix="$2" '
+    /^```python$/ { n++; inside = 1; file = sprintf("%s-%d.py", prefix, n); next }
+    /^```$/ && inside { inside = 0; close(file); next }
+    inside { print > file }
+    END { print n + 0 }' "$1"
+}
+
+status=0
+run_snippet() {
+  if ! MPLBACKEND=Agg "$python" "$1" > "$1.log" 2>&1; then
+    echo "FAILED: $2" >&2
+    cat "$1" >&2
+    cat "$1.log" >&2
+    status=1
+  else
+    echo "ok: $2"
+  fi
+}
+
+count=$(extract "$docs/formats.md" formats)
+[[ "$count" -ge 2 ]] || { echo "FAILED: $count python blocks in formats.md, expected 2 or more" >&2; exit 1; }
+for ((k = 1; k <= count; k++)); do
+  run_snippet "formats-$k.py" "docs/formats.md, python block $k"
+done
+
+count=$(extract "$docs/python.md" python)
+[[ "$count" -ge 1 ]] || { echo "FAILED: no python blocks in python.md" >&2; exit 1; }
+for ((k = 1; k <= count; k++)); do
+  cat "python-$k.py" >> python-all.py
+done
+run_snippet python-all.py "docs/python.md, its $count python blocks in order"
+exit $status
