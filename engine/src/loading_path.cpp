@@ -58,7 +58,7 @@ LoadingPath readLoadingPath(const JsonSection& experiment) {
         Kind(std::find(kKindNames.begin(), kKindNames.end(), kindName) - kKindNames.begin());
     for (const auto& [key, kinds] : keyKinds()) {
         if (t.has(key) && std::find(kinds.begin(), kinds.end(), path.kind) == kinds.end()) {
-            t.fail(key, fmt::format("applies to kind \"{}\" only, not \"{}\"",
+            t.fail(key, fmt::format("{} applies to kind \"{}\" only, not \"{}\"", t.path(key),
                                     loadingKindName(kinds.front()), kindName));
         }
     }
@@ -109,8 +109,8 @@ LoadingPath readLoadingPath(const JsonSection& experiment) {
         if (path.start == LoadingPath::Start::Strain) {
             path.startStrain = t.number("start_strain", openClosed(0.0, kMaxStrain), std::nullopt);
         } else if (t.has("start_strain")) {
-            t.fail("start_strain",
-                   fmt::format("applies to start \"strain\" only, not \"{}\"", start));
+            t.fail("start_strain", fmt::format("{} applies to start \"strain\" only, not \"{}\"",
+                                               t.path("start_strain"), start));
         }
         break;
     }

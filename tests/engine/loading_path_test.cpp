@@ -108,6 +108,7 @@ TEST(LoadingPathReader, RefusalsNameTheFileTheKeyAndTheRange) {
             const std::string what = e.what();
             EXPECT_EQ(e.file, kFile) << what;
             EXPECT_EQ(e.keyPath, bad.key) << what;
+            EXPECT_NE(what.find(bad.key), std::string::npos) << what;
             EXPECT_NE(what.find(bad.range), std::string::npos) << bad.test << " -> " << what;
         }
     }
