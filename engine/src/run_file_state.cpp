@@ -193,8 +193,10 @@ void writeState(H5::Group& g, const SimulationState& s) {
                    "m");
         // The path fields are written only when an axis uses them, so a file of the other
         // modes keeps its layout; a reader defaults them to 0 when absent.
-        const bool pathModes =
-            s.axes[0].mode >= AxisMode::ConstantArea || s.axes[1].mode >= AxisMode::ConstantArea;
+        const auto usesPath = [](const AxisControl& a) {
+            return a.mode == AxisMode::ConstantArea || a.mode == AxisMode::StressPath;
+        };
+        const bool pathModes = usesPath(s.axes[0]) || usesPath(s.axes[1]);
         if (pathModes) {
             writeArray(axes, "reference_area",
                        std::array<double, 2>{s.axes[0].referenceArea, s.axes[1].referenceArea},
