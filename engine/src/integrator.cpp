@@ -51,12 +51,29 @@ void Simulation::updateServo() {
                               : -control.strainRate;
             continue;
         }
+        if (control.mode == AxisMode::ConstantArea) {
+            // det(h') = det(I + L dt) det(h) with det(I + L dt) = (1 + dt L11)(1 + dt L22) -
+            // dt^2 L12 L21: solve for L22 so that det(h') = A0. Axis x1 has set L11 above
+            // (setAxisControl keeps this mode off axis x1). Using the current det(h), not the
+            // previous step's rate, corrects each step's round-off instead of summing it.
+            const double dt = s_.parameters.timeStep;
+            const double factor =
+                (control.referenceArea / cellArea() + dt * dt * L[1] * L[2]) / (1.0 + dt * L[0]);
+            L[3] = (factor - 1.0) / dt;
+            continue;
+        }
         if (!servoStep) {
             continue;
         }
         const double cap = servo.maxStrainRate;
         const double sigma = axis == 0 ? stress_.s11 : stress_.s22;
-        const double error = control.targetStress - sigma;
+        const double target =
+            control.mode == AxisMode::StressPath
+                ? control.targetStress +
+                      control.pathSlope *
+                          ((axis == 0 ? stress_.s22 : stress_.s11) - control.pathOrigin)
+                : control.targetStress;
+        const double error = target - sigma;
         const double modulus = stiffness_[axis];
         double rate;
         if (modulus > 0.0) {

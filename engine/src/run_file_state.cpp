@@ -34,12 +34,31 @@ DampingKind dampingFromName(const std::string& name) {
     throw std::runtime_error(fmt::format("unknown damping_kind \"{}\"", name));
 }
 
+const char* axisModeName(AxisMode mode) {
+    switch (mode) {
+    case AxisMode::Stress:
+        return "stress";
+    case AxisMode::ConstantArea:
+        return "constant_area";
+    case AxisMode::StressPath:
+        return "stress_path";
+    default:
+        return "strain";
+    }
+}
+
 AxisMode axisFromName(const std::string& name) {
     if (name == "strain") {
         return AxisMode::Strain;
     }
     if (name == "stress") {
         return AxisMode::Stress;
+    }
+    if (name == "constant_area") {
+        return AxisMode::ConstantArea;
+    }
+    if (name == "stress_path") {
+        return AxisMode::StressPath;
     }
     throw std::runtime_error(fmt::format("unknown axis mode \"{}\"", name));
 }
@@ -162,9 +181,8 @@ void writeState(H5::Group& g, const SimulationState& s) {
     writeArray(g, "servo_integral", s.servoIntegral, "1/s");
     {
         H5::Group axes = g.createGroup("axes");
-        const std::vector<std::string> modes = {
-            s.axes[0].mode == AxisMode::Stress ? "stress" : "strain",
-            s.axes[1].mode == AxisMode::Stress ? "stress" : "strain"};
+        const std::vector<std::string> modes = {axisModeName(s.axes[0].mode),
+                                                axisModeName(s.axes[1].mode)};
         writeStringListAttribute(axes, "mode", modes);
         writeArray(axes, "strain_rate",
                    std::array<double, 2>{s.axes[0].strainRate, s.axes[1].strainRate}, "1/s");
@@ -173,6 +191,21 @@ void writeState(H5::Group& g, const SimulationState& s) {
         writeArray(axes, "reference_length",
                    std::array<double, 2>{s.axes[0].referenceLength, s.axes[1].referenceLength},
                    "m");
+        // The path fields are written only when an axis uses them, so a file of the other
+        // modes keeps its layout; a reader defaults them to 0 when absent.
+        const auto usesPath = [](const AxisControl& a) {
+            return a.mode == AxisMode::ConstantArea || a.mode == AxisMode::StressPath;
+        };
+        const bool pathModes = usesPath(s.axes[0]) || usesPath(s.axes[1]);
+        if (pathModes) {
+            writeArray(axes, "reference_area",
+                       std::array<double, 2>{s.axes[0].referenceArea, s.axes[1].referenceArea},
+                       "m^2");
+            writeArray(axes, "path_slope",
+                       std::array<double, 2>{s.axes[0].pathSlope, s.axes[1].pathSlope}, "-");
+            writeArray(axes, "path_origin",
+                       std::array<double, 2>{s.axes[0].pathOrigin, s.axes[1].pathOrigin}, "Pa");
+        }
     }
     {
         H5::Group shapes = g.createGroup("shapes");
@@ -228,8 +261,21 @@ SimulationState readState(const H5::Group& g) {
         if (modes.size() != 2) {
             throw std::runtime_error("axes/mode: expected two modes");
         }
+        const auto optional = [&](const char* name) {
+            return axes.nameExists(name) ? readFixed<double, 2>(axes, name)
+                                         : std::array<double, 2>{};
+        };
+        const auto areas = optional("reference_area");
+        const auto slopes = optional("path_slope");
+        const auto origins = optional("path_origin");
         for (int a = 0; a < 2; ++a) {
-            s.axes[a] = {axisFromName(modes[a]), rates[a], targets[a], lengths[a]};
+            s.axes[a] = {axisFromName(modes[a]),
+                         rates[a],
+                         targets[a],
+                         lengths[a],
+                         areas[a],
+                         slopes[a],
+                         origins[a]};
         }
     }
     s.shapes = readShapes(g.openGroup("shapes"));

@@ -119,6 +119,16 @@ ContactGeometry decideOvalPair(const ArcTables& t, const OvalShape& A, const Ova
     return ovalContactAllPairs(A, t.cosT[i], t.sinT[i], B, t.cosT[j], t.sinT[j], l1, l2);
 }
 
+// ConstantArea sets x2's rate from x1's rate of the same step, so it can only drive axis x2.
+void checkAxisControl(int axis, const AxisControl& control) {
+    if (control.mode == AxisMode::ConstantArea &&
+        (axis != 1 || !(control.referenceArea > 0.0) || !std::isfinite(control.referenceArea))) {
+        throw std::invalid_argument(fmt::format(
+            "axis {}: constant area drives axis x2 (1) only, with a reference area > 0 (got {})",
+            axis, control.referenceArea));
+    }
+}
+
 } // namespace
 
 SimulationError::SimulationError(std::int64_t step_, std::int32_t grain_, std::string cause_)
@@ -153,6 +163,9 @@ Simulation::Simulation(SimulationState state) : s_(std::move(state)) {
     if (s_.parameters.threads < 1) {
         throw std::invalid_argument(
             fmt::format("simulation: threads = {}: must be >= 1", s_.parameters.threads));
+    }
+    for (int axis = 0; axis < 2; ++axis) {
+        checkAxisControl(axis, s_.axes[axis]);
     }
     if (!s_.parameters.stability.unguarded) {
         checkTimeStep(s_.shapes, s_.parameters);
@@ -557,8 +570,10 @@ void Simulation::setAxisControl(int axis, const AxisControl& control) {
     if (axis < 0 || axis > 1) {
         throw std::invalid_argument(fmt::format("axis {}: must be 0 (x1) or 1 (x2)", axis));
     }
+    checkAxisControl(axis, control);
     const AxisControl& old = s_.axes[axis];
-    if (old.mode != control.mode || old.targetStress != control.targetStress) {
+    if (old.mode != control.mode || old.targetStress != control.targetStress ||
+        old.pathSlope != control.pathSlope || old.pathOrigin != control.pathOrigin) {
         s_.servoIntegral[axis] = 0.0;
     }
     s_.axes[axis] = control;

@@ -25,17 +25,28 @@ struct DampingParameters {
     double coefficient = 0.05; ///< beta (viscous) or alpha (local) [-]
 };
 
-/// How one axis of the cell is driven: a strain rate, or a stress held by the servo. Compression
-/// positive.
-enum class AxisMode { Strain, Stress };
+/// How one axis of the cell is driven. Compression positive.
+///  - Strain: a strain rate.
+///  - Stress: sigma_ii held at targetStress by the servo.
+///  - ConstantArea (axis x2 only): the rate of x2 is chosen each step so that the cell's area
+///    after the step is referenceArea, the DEM analogue of an undrained test. The next length
+///    follows from A0 and the other axis's next length, so round-off does not accumulate.
+///  - StressPath: the servo holds sigma_ii at targetStress + pathSlope (sigma_jj - pathOrigin),
+///    j the other axis, the target recomputed from the current sigma_jj at every servo update
+///    (slope 0: constant sigma_ii; slope -1 on x2: constant p = (sigma11 + sigma22) / 2).
+enum class AxisMode { Strain, Stress, ConstantArea, StressPath };
 
 struct AxisControl {
     AxisMode mode = AxisMode::Strain;
     double strainRate = 0;   ///< compressive strain rate, Strain mode [1/s]
-    double targetStress = 0; ///< target sigma_ii, Stress mode [Pa]
+    /// Target sigma_ii, Stress mode; sigma_ii at the path origin, StressPath mode [Pa]
+    double targetStress = 0;
     /// Strain mode: 0 makes strainRate the true (logarithmic) rate; a length L0 > 0 makes it
     /// the engineering rate d(L0 - L)/(L0 dt), i.e. a constant length change per step [m].
     double referenceLength = 0;
+    double referenceArea = 0; ///< A0 held, ConstantArea mode [m^2]
+    double pathSlope = 0;     ///< a = d sigma_ii / d sigma_jj along the path, StressPath [-]
+    double pathOrigin = 0;    ///< sigma_jj at the path origin, StressPath mode [Pa]
 };
 
 struct ServoParameters {
