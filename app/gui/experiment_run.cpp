@@ -63,7 +63,8 @@ private:
         if (folder_) {
             folder_->record(series);
         }
-        if (!history_ || series.stages.empty() || series.stages.back().rfind("shear", 0) != 0) {
+        // The record just made is of the stage under way: the history keeps the test's.
+        if (!history_ || series.rows.empty() || runner_.progress().kind != StageKind::Shear) {
             return;
         }
         const std::int64_t record = shearRecords_++;
@@ -118,22 +119,15 @@ private:
     /// kept snapshot would dominate the memory.
     std::shared_ptr<Snapshot> recordSnapshot() {
         const RunProgress p = runner_.progress();
-        if (p.test != thetaTest_) {
-            // The runner keeps the orientations at the start of the test to itself; its own
-            // snapshot's rotation is theta - theta0, so theta0 = theta - rotation. Once per test.
-            const SnapshotPtr full = runner_.snapshot(SnapshotMeasures::Later);
-            thetaAtTestStart_.resize(full->theta.size());
-            for (std::size_t i = 0; i < full->theta.size(); ++i) {
-                thetaAtTestStart_[i] = full->theta[i] - full->rotation[i];
-            }
-            thetaTest_ = p.test;
-        }
         auto s = std::make_shared<Snapshot>();
         s->stage = p.stage;
+        s->stageKind = p.kind;
+        s->stagePressure = p.pressure;
         s->test = p.test;
         s->axialStrain = p.axialStrain;
         s->progress = p.fraction;
-        fillSnapshotScene(*s, runner_.simulation(), thetaAtTestStart_, SnapshotMeasures::Later);
+        s->thetaAtTestStart = p.thetaAtTestStart; // shared by every snapshot of the test
+        fillSnapshotScene(*s, runner_.simulation(), *p.thetaAtTestStart, SnapshotMeasures::Later);
         return s;
     }
 
@@ -148,8 +142,6 @@ private:
     double costSince_ = 0;
     double costSeconds_ = 0;
     double measuredBefore_ = 0; ///< the history's measureSeconds() at the last record
-    std::string thetaTest_;                ///< the test thetaAtTestStart_ belongs to
-    std::vector<double> thetaAtTestStart_; ///< [rad]
 };
 
 } // namespace

@@ -68,12 +68,15 @@ RunFileView openRunFile(const std::string& path) {
         view.checkpoints.push_back(info.name);
         view.checkpointStep.push_back(info.step);
         view.checkpointStage.push_back(stageName(info));
+        view.checkpointKind.push_back(stageKindFromName(info.stageKind).value_or(StageKind::Done));
+        view.checkpointPressure.push_back(info.pressure);
         view.checkpointTest.push_back(info.test.empty() ? std::string() : prefix + info.test);
         view.checkpointStrain.push_back(
             info.stageKind.empty() ? std::numeric_limits<double>::quiet_NaN() : info.axialStrain);
         auto it = first.find(info.test);
         if (it == first.end()) {
-            view.thetaAtTestStart.push_back(readThetaAtTestStart(path, info.name));
+            view.thetaAtTestStart.push_back(
+                std::make_shared<const std::vector<double>>(readThetaAtTestStart(path, info.name)));
             it = first.emplace(info.test, static_cast<int>(view.thetaAtTestStart.size()) - 1).first;
         }
         view.checkpointTestStart.push_back(it->second);
@@ -89,13 +92,15 @@ SnapshotPtr runFileSnapshot(const RunFileView& file, std::size_t index) {
     const std::string& name = file.checkpoints[index];
     Simulation sim(readState(file.path, checkpointGroup(name)));
     auto s = std::make_shared<Snapshot>();
-    static const std::vector<double> none;
-    const std::vector<double>& thetaAtStart =
-        index < file.checkpointTestStart.size()
-            ? file.thetaAtTestStart[file.checkpointTestStart[index]]
-            : none;
-    fillSnapshotScene(*s, sim, thetaAtStart);
+    s->thetaAtTestStart = index < file.checkpointTestStart.size()
+                              ? file.thetaAtTestStart[file.checkpointTestStart[index]]
+                              : std::make_shared<const std::vector<double>>();
+    fillSnapshotScene(*s, sim, *s->thetaAtTestStart);
     s->stage = index < file.checkpointStage.size() ? file.checkpointStage[index] : name;
+    if (index < file.checkpointKind.size()) {
+        s->stageKind = file.checkpointKind[index];
+        s->stagePressure = file.checkpointPressure[index];
+    }
     if (index < file.checkpointStrain.size() && !std::isnan(file.checkpointStrain[index])) {
         s->axialStrain = file.checkpointStrain[index];
         s->test = file.checkpointTest[index];
@@ -112,7 +117,7 @@ int nearestCheckpoint(const RunFileView& file, const std::string& test, double e
     for (std::size_t k = 0; k < file.checkpointStrain.size(); ++k) {
         const double strain = file.checkpointStrain[k];
         if (std::isnan(strain) || (!test.empty() && file.checkpointTest[k] != test) ||
-            file.checkpointStage[k].rfind("shear", 0) != 0) {
+            k >= file.checkpointKind.size() || file.checkpointKind[k] != StageKind::Shear) {
             continue;
         }
         if (std::fabs(strain - eps1) < distance) {

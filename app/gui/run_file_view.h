@@ -7,11 +7,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "grainlab/series.h"
 #include "grainlab/snapshot.h"
+#include "grainlab/stage_kind.h"
 
 namespace grainlab::ui {
 
@@ -23,6 +25,9 @@ struct RunFileView {
     /// kPa"), test (with the file name, as the series) and eps1 of its test.
     std::vector<std::int64_t> checkpointStep;
     std::vector<std::string> checkpointStage;
+    /// Its stage's kind and pressure [Pa], as data (Done for a checkpoint without identity).
+    std::vector<StageKind> checkpointKind;
+    std::vector<double> checkpointPressure;
     std::vector<std::string> checkpointTest;
     std::vector<double> checkpointStrain;
     /// Where each checkpoint's rotation counts from: an index into thetaAtTestStart, the grain
@@ -30,7 +35,8 @@ struct RunFileView {
     /// its equilibration starts, where the live run's rotation counts from too; for the
     /// compaction, the generated assembly's).
     std::vector<int> checkpointTestStart;
-    std::vector<std::vector<double>> thetaAtTestStart;
+    /// Shared with the snapshots of the file (never modified).
+    std::vector<std::shared_ptr<const std::vector<double>>> thetaAtTestStart;
     /// Every test's series; the test names carry the file name, e.g. "run.h5: p015kPa", so that
     /// they never merge with a live test of the same name.
     std::vector<SeriesTable> series;

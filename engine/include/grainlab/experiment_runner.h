@@ -3,6 +3,8 @@
 // confining pressure (saving a sample at each), then for each sample: friction on, re-equilibration
 // and drained biaxial shear, each shear a separate test with its own series. Records the measures,
 // writes checkpoints and outputs through an optional RunOutput, and builds snapshots.
+// Each stage kind is an object of its own (engine/src/stage.h says what one owns and where a new
+// test kind goes); the runner plays them in order. Its state in checkpoints: runner_state.h.
 //
 // Synchronous: advance() runs on the caller's thread (the GUI's worker thread, or the main
 // thread headless). snapshot() returns an immutable object that any thread may read.
@@ -19,14 +21,20 @@
 #include "grainlab/series.h"
 #include "grainlab/simulation.h"
 #include "grainlab/snapshot.h"
+#include "grainlab/stage_kind.h"
 #include "grainlab/void_cells.h"
 
 namespace grainlab {
 
 /// Where a run is: which stage of which test.
 struct RunProgress {
-    std::string stage;      ///< e.g. "compaction 15 kPa", "equilibration 100 kPa", "shear 100 kPa"
-    std::string test;       ///< series the current records go to, e.g. "p100kPa"
+    std::string stage; ///< for display: "compaction 15 kPa", "equilibration 100 kPa", "done"
+    StageKind kind = StageKind::Compaction; ///< the stage's kind, as data
+    double pressure = 0;                    ///< the stage's confining pressure [Pa]
+    std::string test;                       ///< series the current records go to, e.g. "p100kPa"
+    /// Grain orientations at the start of the current test, which rotation counts from [rad]
+    /// (empty during compaction). Shared, never modified: copies of a RunProgress share it.
+    std::shared_ptr<const std::vector<double>> thetaAtTestStart;
     double axialStrain = 0; ///< eps1 of the current test [-]
     double fraction = 0;    ///< of the whole experiment, estimated [0, 1]
     std::int64_t step = 0;  ///< steps of the current simulation

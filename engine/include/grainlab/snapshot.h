@@ -13,6 +13,7 @@
 #include "grainlab/oval_shape.h"
 #include "grainlab/run_warning.h"
 #include "grainlab/series.h"
+#include "grainlab/stage_kind.h"
 
 namespace grainlab {
 
@@ -29,9 +30,14 @@ struct VoidCellView {
 
 struct Snapshot {
     std::int64_t step = 0;
-    double time = 0;           ///< [s]
-    std::string stage;         ///< e.g. "compaction 15 kPa", "shear 100 kPa"
-    std::string test;          ///< the test the series belongs to
+    double time = 0;   ///< [s]
+    std::string stage; ///< for display: "compaction 15 kPa", "shear 100 kPa"
+    StageKind stageKind = StageKind::Compaction; ///< the stage's kind, as data
+    double stagePressure = 0;                    ///< the stage's confining pressure [Pa]
+    std::string test;                            ///< the test the series belongs to
+    /// Orientations at the start of the test, which `rotation` counts from [rad]; shared by
+    /// the snapshots of one test (never modified). Null or empty: none (compaction).
+    std::shared_ptr<const std::vector<double>> thetaAtTestStart;
     double axialStrain = 0;    ///< eps1 [-]
     double progress = 0;       ///< fraction of the whole experiment done [0, 1]
     double stepsPerSecond = 0; ///< measured engine speed

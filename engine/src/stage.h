@@ -1,0 +1,111 @@
+#pragma once
+// A stage of an experiment, as the runner (experiment_runner.cpp) plays it: the runner advances
+// the simulation to the stage's next event, lets the stage handle it, and when the stage says it
+// has finished, ends it and starts the next stage of the plan (experimentPlan()).
+//
+// Each stage kind is a class of its own file pair (stage_*.h): compaction (stage_compaction.h)
+// and re-equilibration (stage_equilibration.h), both waiting for equilibrium
+// (stage_equilibrium.h), and the drained biaxial shear test (stage_drained_shear.h). The
+// generated assembly is made by stage_generation.h. A stage owns:
+//  - how it drives the cell: start() sets each axis's control (Simulation::setAxisControl); a
+//    test that changes them during its course does so in handleEvents();
+//  - when it has finished, and why: handleEvents() returns true; a stage that cannot finish
+//    throws std::runtime_error saying why;
+//  - what it records: it calls RunContext::recordNow() at its record points, and
+//    initialVoidCount() gives the test's N_vi reference; anything it tracks over its records
+//    (the running peak of q/p) is its own state;
+//  - what a checkpoint keeps of it: save() and restore() of its RunnerState fields (new fields
+//    are new keys: an old file lacks them and must still read), and addToCheckpoint() for data
+//    stored beside the checkpoint (the state at the running peak);
+//  - its share of the progress estimate (share(), progress_estimate.h).
+//
+// A new test kind (constant volume, cyclic, probes, ...) is a new StageKind value
+// (grainlab/stage_kind.h), a class like DrainedShearStage in its own stage_*.{h,cpp}, a case in
+// makeStage() and experimentPlan() below, and the experiment file's key that selects it
+// (experiment_file.cpp). The runner itself does not change.
+//
+// Called on the thread that drives the runner; one virtual call per stage event, none per step.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grainlab/experiment.h"
+#include "grainlab/measures.h"
+#include "grainlab/run_output.h"
+#include "grainlab/simulation_state.h"
+#include "grainlab/stage_kind.h"
+#include "progress_estimate.h"
+#include "run_context.h"
+#include "runner_state.h"
+
+namespace grainlab {
+
+/// One entry of a run's plan: a stage kind at a pressure.
+struct PlannedStage {
+    StageKind kind = StageKind::Compaction;
+    int index = 0;       ///< into compaction.pressures (compaction) or shear.pressures (tests)
+    double pressure = 0; ///< the confining pressure [Pa]
+};
+
+/// The stages of an experiment, in order: compaction to each pressure, then for each test
+/// pressure its re-equilibration and its test.
+std::vector<PlannedStage> experimentPlan(const ExperimentConfig& config);
+/// Where the stage of a runner state (phase, index) is in `plan`; plan.size() when done.
+std::size_t planPosition(const std::vector<PlannedStage>& plan, StageKind kind, int index);
+
+class Stage {
+public:
+    explicit Stage(const PlannedStage& planned) : planned_(planned) {}
+    virtual ~Stage() = default;
+    Stage(const Stage&) = delete;
+    Stage& operator=(const Stage&) = delete;
+
+    StageKind kind() const { return planned_.kind; }
+    int index() const { return planned_.index; }
+    double pressure() const { return planned_.pressure; } ///< [Pa]
+    /// The series its records go to.
+    virtual std::string test() const = 0;
+    /// True for a test (its eps1 is the test's axial strain, reported in RunProgress).
+    virtual bool isTest() const { return false; }
+
+    /// Sets up a fresh stage (not a resumed one) on ctx.sim, including its first checkpoint
+    /// if it writes one.
+    virtual void start(RunContext& ctx) = 0;
+    /// Steps until the next thing the stage must look at (>= 1).
+    virtual std::int64_t stepsToNextEvent(const RunContext& ctx) const = 0;
+    /// Looks at the state after a chunk of steps: records, checkpoints; true when finished.
+    virtual bool handleEvents(RunContext& ctx) = 0;
+    /// What the stage does once finished, before the runner's stage-end checkpoint.
+    virtual void finish(RunContext& ctx) { (void)ctx; }
+    /// True when its end is a checkpoint of its own marked stage_done (a compaction's sample, a
+    /// test's end); false when the next stage follows at once (re-equilibration).
+    virtual bool checkpointAtEnd() const = 0;
+
+    /// N_vi of the test for the record being made (measures of that record); 0 outside tests.
+    virtual double initialVoidCount(const MeasureSet& measures) {
+        (void)measures;
+        return 0;
+    }
+    /// Adds what the stage keeps beside a checkpoint (called before the runner state is made).
+    virtual void addToCheckpoint(CheckpointData& data) { (void)data; }
+    /// Writes the stage's own fields of the runner state.
+    virtual void save(RunnerState& state, const RunContext& ctx) const = 0;
+    /// Reads them back, before ctx.sim exists. `resumed` is the checkpoint's state and
+    /// `runningPeak` the ResumePoint's (used by a test tracking a peak).
+    virtual void restore(const RunnerState& state, const RunContext& ctx,
+                         const SimulationState& resumed,
+                         std::optional<SimulationState> runningPeak) = 0;
+    /// Its share of the progress estimate.
+    virtual StageShare share(const ExperimentConfig& config) const = 0;
+
+private:
+    PlannedStage planned_;
+};
+
+/// The stage object for a plan entry.
+std::unique_ptr<Stage> makeStage(const PlannedStage& planned);
+
+} // namespace grainlab

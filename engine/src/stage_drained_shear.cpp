@@ -1,0 +1,188 @@
+#include "stage_drained_shear.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "grainlab/contact_network.h"
+#include "grainlab/loading_rate.h"
+#include "grainlab/void_cells.h"
+#include "stage_equilibration.h"
+
+namespace grainlab {
+
+std::string DrainedShearStage::test() const {
+    return testName(pressure());
+}
+
+void DrainedShearStage::start(RunContext& ctx) {
+    const ExperimentConfig& config = ctx.config;
+    ctx.stageStartStep = ctx.sim->stepCount();
+    ctx.setStrainReference();
+    voidsAtStart_ = -1;
+    peak_ = RunningPeak{};
+    const double dt = config.parameters.timeStep;
+    ctx.sim->setAxisControl(
+        0, {AxisMode::Strain, config.shear.axialStrainPerStep / dt, 0.0, ctx.length1At0});
+    ctx.sim->setAxisControl(1, {AxisMode::Stress, 0.0, pressure()});
+    // Events fall on whole steps counted from the start of shear (each step adds the same
+    // engineering strain), so they do not depend on how advance() is chunked.
+    ctx.nextRecordStep = ctx.stageStartStep;
+    ctx.nextSnapshotStep = ctx.stageStartStep + ctx.strideOf(config.record.snapshotStrainInterval);
+    if (const auto text = inertialNumberWarning(config, pressure())) {
+        ctx.warn("inertial_number", *text);
+    }
+    ctx.recordNow(); // eps1 = 0: N_vi
+    ctx.nextRecordStep = ctx.stageStartStep + ctx.strideOf(config.record.strainInterval);
+    trackPeak(ctx);
+    ctx.checkpoint(ctx.checkpointLabel());
+}
+
+std::int64_t DrainedShearStage::endStep(const RunContext& ctx) const {
+    return ctx.stageStartStep + ctx.strideOf(ctx.config.shear.targetAxialStrain);
+}
+
+std::int64_t DrainedShearStage::stepsToNextEvent(const RunContext& ctx) const {
+    const std::int64_t now = ctx.sim->stepCount();
+    return std::max<std::int64_t>(
+        1, std::min({ctx.nextRecordStep, ctx.nextSnapshotStep, endStep(ctx)}) - now);
+}
+
+bool DrainedShearStage::handleEvents(RunContext& ctx) {
+    const std::int64_t now = ctx.sim->stepCount();
+    const bool end = now >= endStep(ctx);
+    if (now >= ctx.nextRecordStep || end) {
+        ctx.recordNow();
+        ctx.nextRecordStep = now + ctx.strideOf(ctx.config.record.strainInterval);
+        trackPeak(ctx);
+    }
+    if (now >= ctx.nextSnapshotStep && !end) {
+        ctx.checkpoint(ctx.checkpointLabel());
+        ctx.nextSnapshotStep = now + ctx.strideOf(ctx.config.record.snapshotStrainInterval);
+    }
+    return end;
+}
+
+void DrainedShearStage::finish(RunContext& ctx) {
+    peakCheckpoint(ctx);
+    peak_ = RunningPeak{};
+}
+
+double DrainedShearStage::initialVoidCount(const MeasureSet& measures) {
+    if (voidsAtStart_ < 0) {
+        voidsAtStart_ = measures.voidCells.voidCount;
+    }
+    return voidsAtStart_;
+}
+
+/// At a record, before a checkpoint of the same step: a new maximum of q/p keeps a copy of the
+/// state. The first of equal maxima is the peak.
+void DrainedShearStage::trackPeak(RunContext& ctx) {
+    if (!ctx.output) {
+        return; // only the peak checkpoint needs it
+    }
+    const SeriesTable& t = ctx.series[ctx.currentSeries];
+    const double ratio = t.rows.back()[t.column("q_over_p")];
+    if (peak_.active && !(ratio > peak_.at.stressRatio)) {
+        return;
+    }
+    peak_.active = true;
+    peak_.at.stressRatio = ratio;
+    peak_.at.step = ctx.sim->stepCount();
+    peak_.at.eps1 = ctx.eps1();
+    peak_.state = ctx.sim->state();
+    peak_.at.keptIn.clear();
+}
+
+/// The checkpoint at the peak of q/p of the test that is ending, marked as such. It is for
+/// reading and viewing, not for continuing: it has no runner state (a resumed run starts from
+/// the last checkpoint that is not a peak).
+void DrainedShearStage::peakCheckpoint(RunContext& ctx) {
+    if (!ctx.output || !peak_.active) {
+        return;
+    }
+    std::string stage = ctx.stageName();
+    std::replace(stage.begin(), stage.end(), ' ', '-');
+    const std::string name =
+        ctx.nextCheckpointName(fmt::format("peak-{}-step{}", stage, peak_.at.step));
+    // The contacts of the peak's state: a simulation made from it has the same forces, bit
+    // for bit (as a resumed run has).
+    const Simulation atPeak(peak_.state);
+    const ContactNetwork network = atPeak.contactNetwork();
+    const VoidCellSet cells = computeVoidCells(network);
+    CheckpointData data;
+    data.name = name;
+    data.state = &peak_.state;
+    data.identity = ctx.identity();
+    data.identity.step = peak_.at.step;
+    data.identity.axialStrain = peak_.at.eps1;
+    data.identity.peak = true;
+    data.identity.peakStressRatio = peak_.at.stressRatio;
+    data.network = &network;
+    data.voidCells = &cells;
+    ctx.output->checkpoint(data);
+}
+
+void DrainedShearStage::addToCheckpoint(CheckpointData& data) {
+    if (peak_.active && peak_.at.step != data.state->step && peak_.at.keptIn.empty()) {
+        // The first checkpoint since the peak's record keeps its state (named in the runner
+        // state, so written before it is made).
+        data.runningPeak = &peak_.state;
+        peak_.at.keptIn = data.name;
+    }
+}
+
+void DrainedShearStage::save(RunnerState& state, const RunContext& ctx) const {
+    state.voidsAtStart = voidsAtStart_;
+    state.peak.reset();
+    if (peak_.active) {
+        RunningPeakRecord r = peak_.at;
+        if (r.step == ctx.sim->stepCount()) {
+            r.keptIn.clear(); // the checkpoint's own state is the peak's
+        }
+        state.peak = r;
+    }
+}
+
+/// The running peak of a resumed run: from the runner state, with the state kept in the
+/// checkpoint it names (`kept`), or the resumed state itself when the peak was at its step.
+void DrainedShearStage::restore(const RunnerState& state, const RunContext& ctx,
+                                const SimulationState& resumed,
+                                std::optional<SimulationState> kept) {
+    voidsAtStart_ = state.voidsAtStart;
+    if (!state.peak) {
+        return;
+    }
+    peak_.active = true;
+    peak_.at = *state.peak;
+    if (!peak_.at.keptIn.empty()) {
+        if (!kept) {
+            throw std::runtime_error(fmt::format(
+                "resume: the checkpoint's running maximum of q/p is kept in checkpoint {}, "
+                "which the resume point does not hold",
+                peak_.at.keptIn));
+        }
+        peak_.state = std::move(*kept);
+    } else if (peak_.at.step == resumed.step) {
+        peak_.state = resumed;
+    } else {
+        throw std::runtime_error(
+            fmt::format("resume: the running maximum of q/p (step {}) is kept in no checkpoint",
+                        peak_.at.step));
+    }
+    if (peak_.state.step != peak_.at.step) {
+        throw std::runtime_error(fmt::format("resume: the running maximum of q/p is at step "
+                                             "{}, its kept state at step {}",
+                                             peak_.at.step, peak_.state.step));
+    }
+    peak_.state.parameters.threads = threadsFor(ctx.config);
+}
+
+StageShare DrainedShearStage::share(const ExperimentConfig& config) const {
+    const double steps = double(std::max<std::int64_t>(
+        1, std::llround(config.shear.targetAxialStrain / config.shear.axialStrainPerStep)));
+    return {steps, false};
+}
+
+} // namespace grainlab

@@ -1,0 +1,58 @@
+#pragma once
+// The drained biaxial shear test at one confining pressure (shear.pressures[index]), after the
+// sample's re-equilibration: axis 1 shortened at a constant engineering strain per step
+// (shear.axial_strain_per_step), axis 2 servoed to the pressure. It has finished at
+// shear.target_axial_strain. Events fall on whole steps counted from its start: a record every
+// record.strain_interval of eps1, a checkpoint every record.snapshot_strain_interval.
+//
+// It records N_vi at its start (the reference of the void-count columns) and tracks the running
+// maximum of q/p over its records; at its end it writes that state as the test's peak
+// checkpoint. Saved: voids_at_start and peak (with the state at the peak kept beside the first
+// checkpoint after it, the run file's group running_peak).
+//
+// The model for a new test kind: its axis controls in start() (or changed in handleEvents()),
+// its stop criterion in handleEvents(), its records and tracked measures, its save()/restore().
+
+#include "stage.h"
+
+namespace grainlab {
+
+class DrainedShearStage final : public Stage {
+public:
+    using Stage::Stage;
+    std::string test() const override;
+    bool isTest() const override { return true; }
+    void start(RunContext& ctx) override;
+    std::int64_t stepsToNextEvent(const RunContext& ctx) const override;
+    bool handleEvents(RunContext& ctx) override;
+    void finish(RunContext& ctx) override;
+    bool checkpointAtEnd() const override { return true; }
+    double initialVoidCount(const MeasureSet& measures) override;
+    void addToCheckpoint(CheckpointData& data) override;
+    void save(RunnerState& state, const RunContext& ctx) const override;
+    void restore(const RunnerState& state, const RunContext& ctx, const SimulationState& resumed,
+                 std::optional<SimulationState> runningPeak) override;
+    /// Exactly its steps to the target strain (it moves linearly).
+    StageShare share(const ExperimentConfig& config) const override;
+
+private:
+    /// The running maximum of q/p, at record points. The peak is known only when the test
+    /// ends: until then the state of the largest q/p so far is kept here, and written as the
+    /// peak checkpoint at the end. A checkpoint written in between keeps the maximum in its
+    /// runner state (and the state beside the checkpoint, see keptIn), so that a resumed run
+    /// continues it and writes the same peak checkpoint as an unbroken run.
+    struct RunningPeak {
+        bool active = false;
+        RunningPeakRecord at;  ///< q/p, step, eps1, and the checkpoint keeping the state
+        SimulationState state; ///< at that record
+    };
+
+    std::int64_t endStep(const RunContext& ctx) const;
+    void trackPeak(RunContext& ctx);
+    void peakCheckpoint(RunContext& ctx);
+
+    double voidsAtStart_ = -1; ///< N_vi at the test's first record; -1 before it
+    RunningPeak peak_;
+};
+
+} // namespace grainlab

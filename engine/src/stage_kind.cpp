@@ -1,0 +1,36 @@
+#include "grainlab/stage_kind.h"
+
+#include <array>
+#include <utility>
+
+namespace grainlab {
+namespace {
+
+constexpr std::array<std::pair<StageKind, const char*>, 4> kNames{{
+    {StageKind::Compaction, "compaction"},
+    {StageKind::Equilibration, "equilibration"},
+    {StageKind::Shear, "shear"},
+    {StageKind::Done, "done"},
+}};
+
+} // namespace
+
+std::string stageKindName(StageKind kind) {
+    for (const auto& [k, name] : kNames) {
+        if (k == kind) {
+            return name;
+        }
+    }
+    return "done";
+}
+
+std::optional<StageKind> stageKindFromName(const std::string& name) {
+    for (const auto& [k, text] : kNames) {
+        if (name == text) {
+            return k;
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace grainlab
