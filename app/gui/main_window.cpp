@@ -476,7 +476,7 @@ void MainWindow::refresh() {
         // A finished run ("done") ends on its results: the first page, the shear tests.
         const QString page = status.state == RunState::Finished
                                  ? charts_->pages().value(0)
-                                 : charts_->pageOfStage(status.progress.stage);
+                                 : charts_->pageOfStage(status.progress.kind);
         if (!page.isEmpty() && page != chartedPage_) {
             chartedPage_ = page;
             charts_->showPage(page);

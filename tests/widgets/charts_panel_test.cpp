@@ -67,6 +67,7 @@ TEST(ChartsPanel, ShearOnlySkipsCompactionRows) {
     ChartsPanel panel;
     SeriesTable t = testing::makeSeries("p50kPa", 10, 0.5);
     t.stages[0] = t.stages[1] = "compaction 50 kPa";
+    t.stageKinds[0] = t.stageKinds[1] = "compaction";
     panel.setSeries({t});
     EXPECT_EQ(panel.curvePoints(0, "p50kPa", "q_over_p").size(), 8);
     panel.setShearOnly(false);
@@ -82,8 +83,9 @@ TEST(ChartsPanel, ChartsTheCompactionAgainstStepOnItsOwnPage) {
     panel.setSeries({compaction, testing::makeSeries("p015kPa", 50, 0.5)});
     ASSERT_EQ(panel.pages(),
               (QStringList{QStringLiteral("Shear tests"), QStringLiteral("Compaction")}));
-    EXPECT_EQ(panel.pageOfStage("compaction 15 kPa"), QStringLiteral("Compaction"));
-    EXPECT_EQ(panel.pageOfStage("shear 15 kPa"), QStringLiteral("Shear tests"));
+    EXPECT_EQ(panel.pageOfStage(StageKind::Compaction), QStringLiteral("Compaction"));
+    EXPECT_EQ(panel.pageOfStage(StageKind::Shear), QStringLiteral("Shear tests"));
+    EXPECT_EQ(panel.pageOfStage(StageKind::Equilibration), QString());
     const int p = chartIndex(panel, QStringLiteral("compaction_p"));
     const int e = chartIndex(panel, QStringLiteral("compaction_e"));
     const int z = chartIndex(panel, QStringLiteral("compaction_Z"));

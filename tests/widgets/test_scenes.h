@@ -59,6 +59,7 @@ inline SeriesTable makeSeries(const std::string& name, int rows, double peak) {
         t.rows.push_back({e, 0.002 - 0.1 * e, q, 0.4 * q, 0.6 * q, 0.1 * q, 3.9 - 2 * e,
                           4.1 - 3 * e, 0.2 * q, 1.0 - 2 * e});
         t.stages.push_back("shear " + name);
+        t.stageKinds.push_back("shear");
     }
     return t;
 }
@@ -77,6 +78,7 @@ inline SeriesTable makeCompactionSeries(int rows) {
                           0.4 - 0.1 * std::exp(-k / 10.0), 3.5 * (1.0 - std::exp(-k / 5.0)),
                           50.0 * std::exp(-k / 8.0)});
         t.stages.push_back(k > rows / 2 ? "compaction 25 kPa" : "compaction 15 kPa");
+        t.stageKinds.push_back("compaction");
     }
     return t;
 }

@@ -77,7 +77,7 @@ std::vector<ChartDefinition> defaultChartDefinitions() {
          1.0,
          QStringLiteral("p [kPa]"),
          {{"p", QStringLiteral("p"), 1e-3, Qt::SolidLine}},
-         "compaction",
+         StageKind::Compaction,
          compaction},
         {"compaction_e",
          QObject::tr("Compaction: void ratio"),
@@ -86,7 +86,7 @@ std::vector<ChartDefinition> defaultChartDefinitions() {
          1.0,
          QStringLiteral("e [-]"),
          {{"e", QStringLiteral("e"), 1.0, Qt::SolidLine}},
-         "compaction",
+         StageKind::Compaction,
          compaction},
         {"compaction_Z",
          QObject::tr("Compaction: coordination"),
@@ -95,7 +95,7 @@ std::vector<ChartDefinition> defaultChartDefinitions() {
          1.0,
          QStringLiteral("Z [-]"),
          {{"Z", QStringLiteral("Z"), 1.0, Qt::SolidLine}},
-         "compaction",
+         StageKind::Compaction,
          compaction},
         {"compaction_I_uf",
          QObject::tr("Compaction: unbalanced force"),
@@ -104,7 +104,7 @@ std::vector<ChartDefinition> defaultChartDefinitions() {
          1.0,
          QStringLiteral("I_uf [%]"),
          {{"I_uf", QStringLiteral("I_uf"), 1.0, Qt::SolidLine}},
-         "compaction",
+         StageKind::Compaction,
          compaction},
     };
 }
@@ -279,9 +279,9 @@ void ChartsPanel::showPage(const QString& page) {
     }
 }
 
-QString ChartsPanel::pageOfStage(const std::string& stage) const {
+QString ChartsPanel::pageOfStage(StageKind kind) const {
     for (const ChartDefinition& d : definitions_) {
-        if (stage.rfind(d.stage, 0) == 0) {
+        if (d.stage == kind) {
             return d.page;
         }
     }
@@ -312,7 +312,7 @@ void ChartsPanel::setSeries(const std::vector<SeriesTable>& tables) {
         }
         const QColor colour = testColour(table.test);
         // Rows to plot, per stage the charts draw.
-        std::map<std::string, std::vector<std::size_t>> rowsOf;
+        std::map<StageKind, std::vector<std::size_t>> rowsOf;
         for (std::size_t k = 0; k < definitions_.size(); ++k) {
             const ChartDefinition& d = definitions_[k];
             if (rowsOf.count(d.stage)) {
@@ -320,8 +320,8 @@ void ChartsPanel::setSeries(const std::vector<SeriesTable>& tables) {
             }
             std::vector<std::size_t>& rows = rowsOf[d.stage];
             for (std::size_t r = 0; r < table.rows.size(); ++r) {
-                const bool inStage =
-                    r < table.stages.size() && table.stages[r].rfind(d.stage, 0) == 0;
+                const bool inStage = r < table.stageKinds.size() &&
+                                     stageKindFromName(table.stageKinds[r]) == d.stage;
                 if (!shearOnly_ || inStage) {
                     rows.push_back(r);
                 }

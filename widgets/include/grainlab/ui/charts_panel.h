@@ -22,6 +22,7 @@
 #include <QWidget>
 
 #include "grainlab/series.h"
+#include "grainlab/stage_kind.h"
 
 class QTabWidget;
 
@@ -43,8 +44,8 @@ struct ChartDefinition {
     double xScale = 1.0; ///< display factor of x
     QString yLabel;      ///< with unit
     std::vector<ChartCurve> curves;
-    /// The rows drawn: those whose stage starts with this ("shear", "compaction").
-    std::string stage = "shear";
+    /// The rows drawn: those of stages of this kind (the series' stage_kind).
+    StageKind stage = StageKind::Shear;
     /// The page the chart is on (charts of one page share a grid).
     QString page = QObject::tr("Shear tests");
 };
@@ -94,8 +95,8 @@ public:
     /// Shows page `page` (a name from pages()); the shown page's name.
     void showPage(const QString& page);
     QString currentPage() const;
-    /// The page of the charts that draw the rows of `stage` (e.g. "compaction 15 kPa"), or "".
-    QString pageOfStage(const std::string& stage) const;
+    /// The page of the charts that draw the rows of stages of `kind`, or "".
+    QString pageOfStage(StageKind kind) const;
 
     int chartCount() const { return static_cast<int>(views_.size()); }
     const ChartDefinition& definition(int chart) const { return definitions_[chart]; }
