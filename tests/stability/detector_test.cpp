@@ -9,9 +9,9 @@
 #include <gtest/gtest.h>
 
 #include "grainlab/simulation.h"
+#include "grainlab/stability_cell.h"
 #include "grainlab/stability_probe.h"
-#include "stability/stability_cell.h"
-#include "stability/stability_scene.h"
+#include "grainlab/stability_scene.h"
 
 namespace grainlab {
 namespace {

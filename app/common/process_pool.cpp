@@ -1,4 +1,4 @@
-#include "study/process_pool.h"
+#include "common/process_pool.h"
 
 #include <cerrno>
 #include <chrono>
