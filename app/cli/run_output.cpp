@@ -67,9 +67,9 @@ RunFolderLock::RunFolderLock(const std::string& folder, bool create) {
                     folder, owner, file));
             }
             throw std::runtime_error(fmt::format(
-                "the run folder {} is in use: another run{} owns it (it holds {}); wait for "
+                "the run folder {} is in use: another run owns it ({}it holds {}); wait for "
                 "that run to end or stop it",
-                folder, owner > 0 ? fmt::format(" (process {})", owner) : std::string(), file));
+                folder, owner > 0 ? fmt::format("process {}, ", owner) : std::string(), file));
         }
         throw std::runtime_error(fmt::format("cannot lock {}: {}", file, std::strerror(cause)));
     }
