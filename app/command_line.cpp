@@ -10,7 +10,6 @@
 #include "bench/bench.h"
 #include "cli/run_command.h"
 #include "report/report_command.h"
-#include "stability/stability_cell.h"
 #include "stability/stability_command.h"
 #include "study/study_command.h"
 
@@ -32,18 +31,8 @@ std::string executablePath(const char* argv0) {
     return error ? std::filesystem::absolute(argv0).string() : self.string();
 }
 
-} // namespace
-
-int runCommandLine(int argc, char** argv) {
-    CLI::App app{"GrainLab: 2D discrete element simulations of oval grains"};
-    app.set_version_flag("--version", std::string(GRAINLAB_VERSION));
-
-    BenchOptions bench;
-    auto* benchCommand = app.add_subcommand(
-        "bench", "time the engine on a dense assembly under biaxial compression");
-    addBenchOptions(*benchCommand, bench);
-
-    RunOptions run;
+/// `run`: its subcommand and options.
+CLI::App* addRunCommand(CLI::App& app, RunOptions& run) {
     auto* runCommand = app.add_subcommand("run", "run an experiment headless (no display needed)");
     runCommand->add_option("experiment", run.experiment, "experiment file (.json)");
     runCommand->add_option("--out", run.out, "output folder (run.h5 and <test>/series.csv)");
@@ -57,29 +46,37 @@ int runCommandLine(int argc, char** argv) {
     runCommand->add_flag("--force", run.force,
                          "replace the run already in the --out folder (its files are removed)");
     runCommand->add_flag("--quiet", run.quiet, "no progress bar");
+    return runCommand;
+}
 
-    StudyOptions study;
-    auto* studyCommand = app.add_subcommand(
+/// `study` and `study collect`.
+struct StudyCommands {
+    CLI::App* study;
+    CLI::App* collect;
+    std::string collectFolder;
+};
+void addStudyCommands(CLI::App& app, StudyOptions& study, StudyCommands& c) {
+    c.study = app.add_subcommand(
         "study", "run an experiment at several method settings and seeds; chart error against "
                  "cost and recommend the cheapest valid setting");
-    studyCommand->add_option("study", study.studyFile, "study file (.json)");
-    studyCommand->add_option("--out", study.out, "study folder (runs, study.csv, summary.csv)");
-    studyCommand
-        ->add_option("--jobs", study.jobs, "runs at once (default: as the processors allow)")
+    c.study->add_option("study", study.studyFile, "study file (.json)");
+    c.study->add_option("--out", study.out, "study folder (runs, study.csv, summary.csv)");
+    c.study->add_option("--jobs", study.jobs, "runs at once (default: as the processors allow)")
         ->check(CLI::Range(1, 1024));
-    studyCommand
+    c.study
         ->add_option("--emit", study.emit,
                      "write the runs as a Slurm job array (slurm) or a GNU parallel job "
                      "list (parallel) instead of running them")
         ->check(CLI::IsMember({"slurm", "parallel"}));
-    studyCommand->add_flag("--quiet", study.quiet, "no progress bar");
-    std::string collectFolder;
-    auto* collectCommand = studyCommand->add_subcommand(
+    c.study->add_flag("--quiet", study.quiet, "no progress bar");
+    c.collect = c.study->add_subcommand(
         "collect", "summarise a study folder whose runs were run elsewhere (Slurm, GNU parallel)");
-    collectCommand->add_option("folder", collectFolder, "the study folder")->required();
-    collectCommand->add_flag("--quiet", study.quiet, "print nothing but errors");
+    c.collect->add_option("folder", c.collectFolder, "the study folder")->required();
+    c.collect->add_flag("--quiet", study.quiet, "print nothing but errors");
+}
 
-    ReportCommandOptions report;
+/// `report`.
+CLI::App* addReportCommand(CLI::App& app, ReportCommandOptions& report) {
     auto* reportCommand = app.add_subcommand(
         "report", "the reference study's figure set and headline numbers from finished runs of "
                   "one experiment (seeds: means with their scatter)");
@@ -87,55 +84,93 @@ int runCommandLine(int argc, char** argv) {
     reportCommand->add_option("--out", report.out, "report folder (report.html, figures/)")
         ->required();
     reportCommand->add_flag("--quiet", report.quiet, "print nothing but errors");
+    return reportCommand;
+}
 
-    ReproduceOptions reproduce;
-    reproduce.experiment =
-        std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/reference.json";
+/// `reproduce` (its default experiment is set by the caller).
+CLI::App* addReproduceCommand(CLI::App& app, ReproduceOptions& reproduce) {
     auto* reproduceCommand = app.add_subcommand(
         "reproduce", "run the reference experiment at several seeds (a study's local pool, "
                      "resumable), then report on its runs");
-    reproduceCommand->add_option("--grains", reproduce.grains,
-                                 "grains (default: the reference's 8450)")
+    reproduceCommand
+        ->add_option("--grains", reproduce.grains, "grains (default: the reference's 8450)")
         ->check(CLI::Range(2, 1000000));
     reproduceCommand->add_option("--seeds", reproduce.seeds, "seeds (default 1)")
         ->check(CLI::Range(1, 1000));
-    reproduceCommand->add_option("--jobs", reproduce.jobs,
-                                 "runs at once (default: as the processors allow)")
+    reproduceCommand
+        ->add_option("--jobs", reproduce.jobs, "runs at once (default: as the processors allow)")
         ->check(CLI::Range(1, 1024));
     reproduceCommand->add_option("--experiment", reproduce.experiment,
                                  "the experiment to reproduce (default: the reference)");
     reproduceCommand->add_option("--out", reproduce.out, "folder (study/, report/)")->required();
     reproduceCommand->add_flag("--quiet", reproduce.quiet, "no progress bar");
+    return reproduceCommand;
+}
 
-    StabilityOptions stability;
-    auto* stabilityCommand = app.add_subcommand(
+/// `stability`, `stability cell` (one map point) and `stability collect`.
+struct StabilityCommands {
+    CLI::App* map;
+    CLI::App* point;
+    CLI::App* collect;
+    std::string folder, pointId;
+};
+void addStabilityCommands(CLI::App& app, StabilityOptions& stability, StabilityCommands& c) {
+    c.map = app.add_subcommand(
         "stability", "measure where the methods fail: the largest stable time step, the servo's "
                      "stable gain and interval, the contact geometry's valid overlap "
                      "(docs/stability.md)");
-    stabilityCommand->add_option("preset_file", stability.presetFile, "stability preset (.json)");
-    stabilityCommand->add_option("--preset", stability.preset,
-                                 "a preset of resources/stability (tiny, full, servo-tiny, "
-                                 "servo-full, geometry-tiny, geometry-full)");
-    stabilityCommand->add_option("--out", stability.out, "map folder (cells/, limits.csv)");
-    stabilityCommand
-        ->add_option("--jobs", stability.jobs, "cells at once (default: the processors)")
+    c.map->add_option("preset_file", stability.presetFile, "stability preset (.json)");
+    c.map->add_option("--preset", stability.preset,
+                      "a preset of resources/stability (tiny, full, servo-tiny, "
+                      "servo-full, geometry-tiny, geometry-full)");
+    c.map->add_option("--out", stability.out, "map folder (cells/, limits.csv)");
+    c.map->add_option("--jobs", stability.jobs, "map points at once (default: the processors)")
         ->check(CLI::Range(1, 1024));
-    stabilityCommand
+    c.map
         ->add_option("--emit", stability.emit,
-                     "write the cells as a Slurm job array (slurm) or a GNU parallel job list "
+                     "write the map points as a Slurm job array (slurm) or a GNU parallel job list "
                      "(parallel) instead of running them")
         ->check(CLI::IsMember({"slurm", "parallel"}));
-    stabilityCommand->add_flag("--quiet", stability.quiet, "no progress bar");
-    std::string stabilityFolder, stabilityCell;
-    auto* stabilityCellCommand =
-        stabilityCommand->add_subcommand("cell", "measure one cell of a map folder");
-    stabilityCellCommand->add_option("folder", stabilityFolder, "the map folder")->required();
-    stabilityCellCommand->add_option("--cell", stabilityCell, "the cell's id")->required();
-    stabilityCellCommand->add_flag("--quiet", stability.quiet, "print nothing but errors");
-    auto* stabilityCollectCommand = stabilityCommand->add_subcommand(
-        "collect", "write limits.csv (and figures) of a map folder whose cells ran elsewhere");
-    stabilityCollectCommand->add_option("folder", stabilityFolder, "the map folder")->required();
-    stabilityCollectCommand->add_flag("--quiet", stability.quiet, "print nothing but errors");
+    c.map->add_flag("--quiet", stability.quiet, "no progress bar");
+    c.point = c.map->add_subcommand("cell", "measure one map point of a map folder");
+    c.point->add_option("folder", c.folder, "the map folder")->required();
+    c.point->add_option("--cell", c.pointId, "the map point's id")->required();
+    c.point->add_flag("--quiet", stability.quiet, "print nothing but errors");
+    c.collect = c.map->add_subcommand(
+        "collect", "write limits.csv (and figures) of a map folder whose map points ran elsewhere");
+    c.collect->add_option("folder", c.folder, "the map folder")->required();
+    c.collect->add_flag("--quiet", stability.quiet, "print nothing but errors");
+}
+
+} // namespace
+
+int runCommandLine(int argc, char** argv) {
+    CLI::App app{"GrainLab: 2D discrete element simulations of oval grains"};
+    app.set_version_flag("--version", std::string(GRAINLAB_VERSION));
+
+    BenchOptions bench;
+    auto* benchCommand = app.add_subcommand(
+        "bench", "time the engine on a dense assembly under biaxial compression");
+    addBenchOptions(*benchCommand, bench);
+
+    RunOptions run;
+    CLI::App* runCommand = addRunCommand(app, run);
+
+    StudyOptions study;
+    StudyCommands studyCommands;
+    addStudyCommands(app, study, studyCommands);
+
+    ReportCommandOptions report;
+    CLI::App* reportCommand = addReportCommand(app, report);
+
+    ReproduceOptions reproduce;
+    reproduce.experiment =
+        std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/reference.json";
+    CLI::App* reproduceCommand = addReproduceCommand(app, reproduce);
+
+    StabilityOptions stability;
+    StabilityCommands stabilityCommands;
+    addStabilityCommands(app, stability, stabilityCommands);
 
     std::string experiment = std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json";
     app.add_option("--experiment", experiment, "experiment to open in the window");
@@ -170,14 +205,15 @@ int runCommandLine(int argc, char** argv) {
             reproduce.grainlab = executablePath(argv[0]);
             return runReproduceCommand(reproduce);
         }
-        if (*stabilityCellCommand) {
-            return runStabilityMapCell(stabilityFolder, stabilityCell, stability.quiet);
+        if (*stabilityCommands.point) {
+            return runStabilityMapCell(stabilityCommands.folder, stabilityCommands.pointId,
+                                       stability.quiet);
         }
-        if (*stabilityCollectCommand) {
-            return collectStabilityCommand(stabilityFolder, stability.quiet, stability.figures,
-                                           stability.servoFigures);
+        if (*stabilityCommands.collect) {
+            return collectStabilityCommand(stabilityCommands.folder, stability.quiet,
+                                           stability.figures, stability.servoFigures);
         }
-        if (*stabilityCommand) {
+        if (*stabilityCommands.map) {
             if (stability.out.empty() || stability.preset.empty() == stability.presetFile.empty()) {
                 fmt::print(stderr, "grainlab stability: give --preset NAME or a preset file, and "
                                    "--out DIR\n");
@@ -186,10 +222,10 @@ int runCommandLine(int argc, char** argv) {
             stability.grainlab = executablePath(argv[0]);
             return runStabilityCommand(stability);
         }
-        if (*collectCommand) {
-            return collectStudyCommand(collectFolder, study.quiet, study.figures);
+        if (*studyCommands.collect) {
+            return collectStudyCommand(studyCommands.collectFolder, study.quiet, study.figures);
         }
-        if (*studyCommand) {
+        if (*studyCommands.study) {
             if (study.studyFile.empty() || study.out.empty()) {
                 fmt::print(stderr, "grainlab study: give a study file and --out DIR\n");
                 return 2;

@@ -19,7 +19,7 @@
 
 #include "bench/lammps_peer.h"
 #include "bench/limit_kernel.h"
-#include "cli/progress_bar.h"
+#include "common/progress_bar.h"
 #include "grainlab/assembly.h"
 #include "grainlab/measures.h"
 #include "grainlab/scenes/compacted_scene.h"
@@ -263,58 +263,11 @@ void addBenchOptions(CLI::App& command, BenchOptions& o) {
         ->capture_default_str();
 }
 
-int runBench(const BenchOptions& o, WindowBench windowBench) {
-    std::vector<std::pair<std::string, double>> shapes;
-    if (o.shape == "disk" || o.shape == "both") {
-        shapes.emplace_back("disk", 1.0);
-    }
-    if (o.shape == "oval" || o.shape == "both") {
-        shapes.emplace_back("oval", 0.6);
-    }
-    if (shapes.empty()) {
-        fmt::print(stderr, "bench: --shape {}: allowed values are oval, disk, both\n", o.shape);
-        return 2;
-    }
-    if (o.assembly != "lammps" && o.assembly != "generated") {
-        fmt::print(stderr, "bench: --assembly {}: allowed values are lammps, generated\n",
-                   o.assembly);
-        return 2;
-    }
-    if (o.rounds < 1 || o.steps < 1 || o.guiSteps < 1) {
-        fmt::print(stderr, "bench: --rounds, --steps and --gui-steps must be >= 1\n");
-        return 2;
-    }
-    if (o.guiOverlays && !o.gui) {
-        fmt::print(stderr, "bench: --gui-overlays belongs to the window bench: add --gui\n");
-        return 2;
-    }
-    const std::vector<int> threadCounts = parseThreads(o.threads);
-    if (o.gui) {
-        if (windowBench == nullptr) {
-            fmt::print(stderr, "bench: --gui: this grainlab was built without the window "
-                               "(GRAINLAB_BUILD_GUI=OFF)\n");
-            return 2;
-        }
-        return windowBench(o);
-    }
-    if (o.scaling) {
-        return runScaling(o, shapes, threadCounts);
-    }
-    if (o.versusLammps && !haveExecutable(o.lammpsExecutable)) {
-        fmt::print(stderr,
-                   "bench: --vs-lammps: the LAMMPS executable `{}` was not found. On Debian 12: "
-                   "apt-get update && apt-get install -y lammps   (provides `lmp`)\n",
-                   o.lammpsExecutable);
-        return 2;
-    }
+namespace {
 
-    if (o.limit && o.shape == "oval") {
-        fmt::print(stderr,
-                   "bench: --limit: the minimal kernel runs disks: use --shape disk or both\n");
-        return 2;
-    }
-
-    // The dense assemblies, prepared once.
+/// The dense assemblies of the bench, prepared once: (shape name, state).
+std::vector<std::pair<std::string, SimulationState>>
+denseAssemblies(const BenchOptions& o, const std::vector<std::pair<std::string, double>>& shapes) {
     std::vector<std::pair<std::string, SimulationState>> assemblies;
     for (const auto& [name, aspect] : shapes) {
         if (name == "disk" && o.assembly == "lammps") {
@@ -329,74 +282,14 @@ int runBench(const BenchOptions& o, WindowBench windowBench) {
         }
     }
 
-    // Rows in the order they run within a round: ours 1 thread, the limit kernel 1 thread,
-    // LAMMPS, ours 2 threads, the limit kernel 2 threads, ...
-    enum class Runner { Engine, Lammps, Limit };
-    struct Planned {
-        std::size_t assembly;
-        int threads;
-        Runner runner;
-    };
-    std::vector<Series> series;
-    std::vector<Planned> plan;
-    for (std::size_t a = 0; a < assemblies.size(); ++a) {
-        for (std::size_t t = 0; t < threadCounts.size(); ++t) {
-            plan.push_back({a, threadCounts[t], Runner::Engine});
-            if (o.limit && assemblies[a].first == "disk") {
-                plan.push_back({a, threadCounts[t], Runner::Limit});
-            }
-            if (a == 0 && t == 0 && o.versusLammps) {
-                plan.push_back({a, 1, Runner::Lammps});
-            }
-        }
-    }
-    for (const Planned& k : plan) {
-        Series s;
-        s.shape = k.runner == Runner::Lammps ? "disk" : assemblies[k.assembly].first;
-        s.threads = k.threads;
-        s.grains = assemblies[k.assembly].second.grains.size();
-        s.name = k.runner == Runner::Lammps  ? "LAMMPS"
-                 : k.runner == Runner::Limit ? "limit"
-                                             : "GrainLab";
-        series.push_back(s);
-    }
-    std::vector<int> identical(assemblies.size(), 1);
-    for (int round = 0; round < o.rounds; ++round) {
-        std::vector<SimulationState> firstFinal(assemblies.size());
-        for (std::size_t k = 0; k < plan.size(); ++k) {
-            const std::size_t a = plan[k].assembly;
-            const int threads = plan[k].threads;
-            Series& s = series[k];
-            fmt::print(stderr, "round {}/{}: {} {} {} thread(s), {} steps\n", round + 1, o.rounds,
-                       s.name, s.shape, s.threads, o.steps);
-            if (plan[k].runner == Runner::Limit) {
-                const RunResult r = timeLimit(assemblies[a].second, threads, o.steps);
-                s.rate.push_back(r.grainStepsPerSecond);
-                s.contacts.push_back(r.contactsPerGrain);
-                s.rebuilds = r.rebuilds;
-                s.pairsPerGrain = r.pairsPerGrain;
-                continue;
-            }
-            if (plan[k].runner == Runner::Lammps) {
-                const LammpsResult r = runLammps(o.lammpsDirectory, o.lammpsExecutable, o.steps);
-                s.rate.push_back(r.grainStepsPerSecond);
-                s.contacts.push_back(r.contactsPerGrain);
-                continue;
-            }
-            RunResult r = timeEngine(assemblies[a].second, threads, o.steps, true);
-            s.rate.push_back(r.grainStepsPerSecond);
-            s.contacts.push_back(r.contactsPerGrain);
-            s.rebuilds = r.rebuilds;
-            s.pairsPerGrain = r.pairsPerGrain;
-            s.bytesPerGrain = r.bytesPerGrain;
-            if (firstFinal[a].grains.size() == 0) {
-                firstFinal[a] = std::move(r.final);
-            } else if (!identicalDynamics(firstFinal[a], r.final)) {
-                identical[a] = 0;
-            }
-        }
-    }
+    return assemblies;
+}
 
+/// The table of rates and the ratios between its rows.
+void printBenchResults(const BenchOptions& o, const std::vector<Series>& series,
+                       const std::vector<int>& threadCounts,
+                       const std::vector<std::pair<std::string, SimulationState>>& assemblies,
+                       const std::vector<int>& identical) {
     fmt::print("{:<9} {:<5} {:>6} {:>7} {:>7} {:>14} {:>11} {:>11} {:>9} {:>8} {:>8} {:>8}\n",
                "engine", "shape", "grains", "threads", "steps", "grain-steps/s", "min", "max",
                "contacts/g", "pairs/g", "rebuilds", "B/grain");
@@ -468,6 +361,132 @@ int runBench(const BenchOptions& o, WindowBench windowBench) {
                        o.threads, identical[a] ? "yes" : "NO");
         }
     }
+}
+
+} // namespace
+
+int runBench(const BenchOptions& o, WindowBench windowBench) {
+    std::vector<std::pair<std::string, double>> shapes;
+    if (o.shape == "disk" || o.shape == "both") {
+        shapes.emplace_back("disk", 1.0);
+    }
+    if (o.shape == "oval" || o.shape == "both") {
+        shapes.emplace_back("oval", 0.6);
+    }
+    if (shapes.empty()) {
+        fmt::print(stderr, "bench: --shape {}: allowed values are oval, disk, both\n", o.shape);
+        return 2;
+    }
+    if (o.assembly != "lammps" && o.assembly != "generated") {
+        fmt::print(stderr, "bench: --assembly {}: allowed values are lammps, generated\n",
+                   o.assembly);
+        return 2;
+    }
+    if (o.rounds < 1 || o.steps < 1 || o.guiSteps < 1) {
+        fmt::print(stderr, "bench: --rounds, --steps and --gui-steps must be >= 1\n");
+        return 2;
+    }
+    if (o.guiOverlays && !o.gui) {
+        fmt::print(stderr, "bench: --gui-overlays belongs to the window bench: add --gui\n");
+        return 2;
+    }
+    const std::vector<int> threadCounts = parseThreads(o.threads);
+    if (o.gui) {
+        if (windowBench == nullptr) {
+            fmt::print(stderr, "bench: --gui: this grainlab was built without the window "
+                               "(GRAINLAB_BUILD_GUI=OFF)\n");
+            return 2;
+        }
+        return windowBench(o);
+    }
+    if (o.scaling) {
+        return runScaling(o, shapes, threadCounts);
+    }
+    if (o.versusLammps && !haveExecutable(o.lammpsExecutable)) {
+        fmt::print(stderr,
+                   "bench: --vs-lammps: the LAMMPS executable `{}` was not found. On Debian 12: "
+                   "apt-get update && apt-get install -y lammps   (provides `lmp`)\n",
+                   o.lammpsExecutable);
+        return 2;
+    }
+
+    if (o.limit && o.shape == "oval") {
+        fmt::print(stderr,
+                   "bench: --limit: the minimal kernel runs disks: use --shape disk or both\n");
+        return 2;
+    }
+
+    const auto assemblies = denseAssemblies(o, shapes);
+
+    // Rows in the order they run within a round: ours 1 thread, the limit kernel 1 thread,
+    // LAMMPS, ours 2 threads, the limit kernel 2 threads, ...
+    enum class Runner { Engine, Lammps, Limit };
+    struct Planned {
+        std::size_t assembly;
+        int threads;
+        Runner runner;
+    };
+    std::vector<Series> series;
+    std::vector<Planned> plan;
+    for (std::size_t a = 0; a < assemblies.size(); ++a) {
+        for (std::size_t t = 0; t < threadCounts.size(); ++t) {
+            plan.push_back({a, threadCounts[t], Runner::Engine});
+            if (o.limit && assemblies[a].first == "disk") {
+                plan.push_back({a, threadCounts[t], Runner::Limit});
+            }
+            if (a == 0 && t == 0 && o.versusLammps) {
+                plan.push_back({a, 1, Runner::Lammps});
+            }
+        }
+    }
+    for (const Planned& k : plan) {
+        Series s;
+        s.shape = k.runner == Runner::Lammps ? "disk" : assemblies[k.assembly].first;
+        s.threads = k.threads;
+        s.grains = assemblies[k.assembly].second.grains.size();
+        s.name = k.runner == Runner::Lammps  ? "LAMMPS"
+                 : k.runner == Runner::Limit ? "limit"
+                                             : "GrainLab";
+        series.push_back(s);
+    }
+    std::vector<int> identical(assemblies.size(), 1);
+    for (int round = 0; round < o.rounds; ++round) {
+        std::vector<SimulationState> firstFinal(assemblies.size());
+        for (std::size_t k = 0; k < plan.size(); ++k) {
+            const std::size_t a = plan[k].assembly;
+            const int threads = plan[k].threads;
+            Series& s = series[k];
+            fmt::print(stderr, "round {}/{}: {} {} {} thread(s), {} steps\n", round + 1, o.rounds,
+                       s.name, s.shape, s.threads, o.steps);
+            if (plan[k].runner == Runner::Limit) {
+                const RunResult r = timeLimit(assemblies[a].second, threads, o.steps);
+                s.rate.push_back(r.grainStepsPerSecond);
+                s.contacts.push_back(r.contactsPerGrain);
+                s.rebuilds = r.rebuilds;
+                s.pairsPerGrain = r.pairsPerGrain;
+                continue;
+            }
+            if (plan[k].runner == Runner::Lammps) {
+                const LammpsResult r = runLammps(o.lammpsDirectory, o.lammpsExecutable, o.steps);
+                s.rate.push_back(r.grainStepsPerSecond);
+                s.contacts.push_back(r.contactsPerGrain);
+                continue;
+            }
+            RunResult r = timeEngine(assemblies[a].second, threads, o.steps, true);
+            s.rate.push_back(r.grainStepsPerSecond);
+            s.contacts.push_back(r.contactsPerGrain);
+            s.rebuilds = r.rebuilds;
+            s.pairsPerGrain = r.pairsPerGrain;
+            s.bytesPerGrain = r.bytesPerGrain;
+            if (firstFinal[a].grains.size() == 0) {
+                firstFinal[a] = std::move(r.final);
+            } else if (!identicalDynamics(firstFinal[a], r.final)) {
+                identical[a] = 0;
+            }
+        }
+    }
+
+    printBenchResults(o, series, threadCounts, assemblies, identical);
     std::fflush(stdout);
     return 0;
 }

@@ -29,7 +29,7 @@
 #include <time.h>
 
 #include "bench/bench.h"
-#include "cli/progress_bar.h"
+#include "common/progress_bar.h"
 #include "grainlab/assembly.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"

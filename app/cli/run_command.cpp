@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "cli/progress_bar.h"
-#include "cli/run_cost.h"
+#include "common/progress_bar.h"
+#include "common/run_cost.h"
 #include "cli/run_output.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"

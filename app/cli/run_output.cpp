@@ -4,7 +4,9 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -14,6 +16,27 @@
 namespace grainlab {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+/// The pid the owner of run.lock wrote into it, or 0 when it holds none (an empty file: the run
+/// that held it ended and emptied it).
+long lockOwner(int fd) {
+    char text[32] = {};
+    const ssize_t n = ::pread(fd, text, sizeof text - 1, 0);
+    if (n <= 0) {
+        return 0;
+    }
+    char* end = nullptr;
+    const long pid = std::strtol(text, &end, 10);
+    return pid > 0 ? pid : 0;
+}
+
+bool processExists(long pid) {
+    return ::kill(pid_t(pid), 0) == 0 || errno == EPERM;
+}
+
+} // namespace
 
 RunFolderLock::RunFolderLock(const std::string& folder, bool create) {
     const std::string file = path(folder);
@@ -32,20 +55,48 @@ RunFolderLock::RunFolderLock(const std::string& folder, bool create) {
     }
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
         const int cause = errno;
+        const long owner = lockOwner(fd_);
         ::close(fd_);
         fd_ = -1;
         if (cause == EWOULDBLOCK) {
+            if (owner > 0 && !processExists(owner)) {
+                // The flock outlives its owner only in a process that inherited the open file.
+                throw std::runtime_error(fmt::format(
+                    "the run folder {} is in use: its owner, process {}, has ended, but a "
+                    "process it started still holds {}; end that process",
+                    folder, owner, file));
+            }
             throw std::runtime_error(fmt::format(
-                "the run folder {} is in use: another run owns it (it holds {}); wait for that "
-                "run to end or stop it",
-                folder, file));
+                "the run folder {} is in use: another run owns it ({}it holds {}); wait for "
+                "that run to end or stop it",
+                folder, owner > 0 ? fmt::format("process {}, ", owner) : std::string(), file));
         }
         throw std::runtime_error(fmt::format("cannot lock {}: {}", file, std::strerror(cause)));
+    }
+    // The flock is the lock (the kernel drops it when its holder dies); the pid written into the
+    // file names the holder for the refusal above, and a pid still there when the flock is free
+    // is that of a run that was killed before it could empty the file.
+    const long stale = lockOwner(fd_);
+    if (stale > 0 && stale != long(::getpid())) {
+        fmt::print(stderr,
+                   "grainlab: {}: taking over the stale lock of process {}, which {} (a run "
+                   "that was killed leaves its pid there)\n",
+                   file, stale, processExists(stale) ? "no longer holds it" : "no longer exists");
+    }
+    const std::string pid = fmt::format("{}\n", long(::getpid()));
+    if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) != ssize_t(pid.size())) {
+        const int cause = errno;
+        ::close(fd_);
+        fd_ = -1;
+        throw std::runtime_error(
+            fmt::format("cannot write the owner into {}: {}", file, std::strerror(cause)));
     }
 }
 
 RunFolderLock::~RunFolderLock() {
     if (fd_ >= 0) {
+        // An empty file: the run ended, nobody to take over from.
+        [[maybe_unused]] const int emptied = ::ftruncate(fd_, 0);
         ::close(fd_); // releases the flock
     }
 }

@@ -25,7 +25,7 @@
 #include "grainlab/experiment.h"
 #include "gui/experiment_run.h"
 #include "gui/picture_budget.h"
-#include "gui/run_file_view.h"
+#include "common/run_file_view.h"
 #include "gui/simulation_controller.h"
 
 class QAction;

@@ -11,7 +11,7 @@
 #include <QStatusBar>
 #include <QUrl>
 
-#include "cli/atomic_file.h"
+#include "common/atomic_file.h"
 #include "grainlab/csv_series.h"
 #include "grainlab/ui/charts_panel.h"
 #include "grainlab/ui/figure_export.h"

@@ -1,29 +1,23 @@
 // See report_job.h.
 #include "gui/report_job.h"
 
-#include <QProcess>
+#include "gui/command_process.h"
 
 namespace grainlab::ui {
 
-ReportJob::ReportJob(QObject* parent) : QObject(parent), process_(new QProcess(this)) {
-    process_->setStandardInputFile(QProcess::nullDevice());
-    process_->setProcessChannelMode(QProcess::MergedChannels);
-    connect(process_, &QProcess::finished, this, [this](int code, QProcess::ExitStatus status) {
-        const QString output = QString::fromLocal8Bit(process_->readAll()).trimmed();
-        if (status != QProcess::NormalExit) {
-            emit finished(out_, tr("The report stopped abnormally: %1").arg(output));
-        } else if (code != 0) {
-            emit finished(out_, tr("The report failed: %1").arg(output));
-        } else {
-            emit finished(out_, QString());
-        }
-    });
-    // A process that cannot start emits no finished().
-    connect(process_, &QProcess::errorOccurred, this, [this](QProcess::ProcessError e) {
-        if (e == QProcess::FailedToStart) {
-            emit finished(out_, tr("The report could not start: %1").arg(process_->errorString()));
-        }
-    });
+ReportJob::ReportJob(QObject* parent) : QObject(parent), command_(new CommandProcess(this)) {
+    connect(command_, &CommandProcess::ended, this,
+            [this](int code, const QString& output, const QString& startError) {
+                if (!startError.isEmpty()) {
+                    emit finished(out_, tr("The report could not start: %1").arg(startError));
+                } else if (code < 0) {
+                    emit finished(out_, tr("The report stopped abnormally: %1").arg(output));
+                } else if (code != 0) {
+                    emit finished(out_, tr("The report failed: %1").arg(output));
+                } else {
+                    emit finished(out_, QString());
+                }
+            });
 }
 
 bool ReportJob::start(const QString& grainlab, const QString& source, const QString& out) {
@@ -31,13 +25,12 @@ bool ReportJob::start(const QString& grainlab, const QString& source, const QStr
         return false;
     }
     out_ = out;
-    process_->start(grainlab, {QStringLiteral("report"), source, QStringLiteral("--out"), out,
-                               QStringLiteral("--quiet")});
-    return true;
+    return command_->start(grainlab, {QStringLiteral("report"), source, QStringLiteral("--out"),
+                                      out, QStringLiteral("--quiet")});
 }
 
 bool ReportJob::running() const {
-    return process_->state() != QProcess::NotRunning;
+    return command_->running();
 }
 
 } // namespace grainlab::ui

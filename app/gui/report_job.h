@@ -7,9 +7,9 @@
 #include <QObject>
 #include <QString>
 
-class QProcess;
-
 namespace grainlab::ui {
+
+class CommandProcess;
 
 class ReportJob : public QObject {
     Q_OBJECT
@@ -27,7 +27,7 @@ signals:
     void finished(const QString& out, const QString& error);
 
 private:
-    QProcess* process_;
+    CommandProcess* command_;
     QString out_;
 };
 

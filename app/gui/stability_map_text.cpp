@@ -8,22 +8,9 @@
 #include <QRegularExpression>
 #include <QStringList>
 
+#include "gui/ui_text.h"
+
 namespace grainlab::ui {
-namespace {
-
-QString q(const std::string& s) {
-    return QString::fromStdString(s);
-}
-
-QString number(double v) {
-    return QString::number(v, 'g', 4);
-}
-
-QString yesNo(bool v) {
-    return v ? QObject::tr("yes") : QObject::tr("no");
-}
-
-} // namespace
 
 QString stabilityCellNumbers(const StabilityCellResult& r) {
     const StabilityCell& c = r.cell;

@@ -3,9 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <csignal>
-
-#include <signal.h>
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -16,15 +13,16 @@
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QProcess>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QToolTip>
 #include <QVBoxLayout>
 
 #include "grainlab/ui/heat_map_view.h"
+#include "gui/command_process.h"
 #include "gui/duration_text.h"
 #include "gui/stability_map_text.h"
+#include "gui/ui_text.h"
 #include "gui/window_run_folder.h"
 
 namespace grainlab::ui {
@@ -33,14 +31,6 @@ namespace {
 constexpr int kPollMs = 1000;                               ///< how often the folder is read [ms]
 const QString kPresetFileItem = QStringLiteral("\x01file"); ///< the box's "Preset file…" item
 const QPoint kNoSquare(-1, -1);
-
-QString q(const std::string& s) {
-    return QString::fromStdString(s);
-}
-
-QString number(double v) {
-    return QString::number(v, 'g', 4);
-}
 
 QString presetsFolder() {
     return QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/stability");
@@ -90,7 +80,14 @@ double shownValue(const StabilityCellResult& r, StabilityValue value) {
 StabilityView::StabilityView(QWidget* parent, QString grainlab)
     : QWidget(parent),
       grainlab_(grainlab.isEmpty() ? QCoreApplication::applicationFilePath() : grainlab),
-      workerContext_(new QObject) {
+      command_(new CommandProcess(this)), workerContext_(new QObject) {
+    connect(command_, &CommandProcess::ended, this,
+            [this](int code, const QString&, const QString& startError) {
+                if (!startError.isEmpty()) {
+                    status_->setText(tr("Could not start %1: %2").arg(grainlab_, startError));
+                }
+                processEnded(code);
+            });
     workerContext_->moveToThread(&worker_);
     worker_.start();
     poll_.setInterval(kPollMs);
@@ -229,13 +226,7 @@ StabilityView::~StabilityView() {
     worker_.quit();
     worker_.wait();
     delete workerContext_;
-    if (process_ && process_->state() != QProcess::NotRunning) {
-        // The map goes on without the window (its output goes to a file, not to us): the
-        // process object is let go, so that its destructor does not kill it.
-        disconnect(process_, nullptr, this, nullptr);
-        process_->setParent(nullptr);
-        process_ = nullptr;
-    }
+    // A running map goes on without the window (its output goes to a file, not to us).
 }
 
 QStringList StabilityView::shippedPresets() {
@@ -353,7 +344,7 @@ void StabilityView::followFolder(const QString& folder, bool adoptItsMap) {
 }
 
 bool StabilityView::running() const {
-    return process_ != nullptr;
+    return command_->running();
 }
 
 bool StabilityView::start(QString* error) {
@@ -388,29 +379,15 @@ bool StabilityView::start(QString* error) {
     const std::string name = choice_.isEmpty() ? state_->spec.name : choiceSpec_.name;
     // The map's own output (its progress, a failed cell's name) goes to a file: the map must not
     // depend on the window's pipes, since it goes on when the window closes.
-    logPath_ = QDir(QDir::tempPath())
-                   .filePath(QStringLiteral("grainlab-stability-%1-%2.log")
-                                 .arg(q(name))
-                                 .arg(QCoreApplication::applicationPid()));
-    process_ = new QProcess(this);
-    process_->setStandardInputFile(QProcess::nullDevice());
-    process_->setProcessChannelMode(QProcess::MergedChannels);
-    process_->setStandardOutputFile(logPath_, QIODevice::Truncate);
-    connect(process_, &QProcess::finished, this, [this](int code, QProcess::ExitStatus status) {
-        processEnded(status == QProcess::NormalExit ? code : -1);
-    });
-    connect(process_, &QProcess::errorOccurred, this, [this](QProcess::ProcessError e) {
-        if (e == QProcess::FailedToStart) {
-            status_->setText(tr("Could not start %1: %2").arg(grainlab_, process_->errorString()));
-            processEnded(-1);
-        }
-    });
+    const QString logPath = QDir(QDir::tempPath())
+                                .filePath(QStringLiteral("grainlab-stability-%1-%2.log")
+                                              .arg(q(name))
+                                              .arg(QCoreApplication::applicationPid()));
     lastExit_.reset();
-    stopping_ = false;
     finishedAtStart_ = state_ ? state_->finishedCount() : 0;
     sinceStart_.start();
     status_->setText(tr("Running: %1 %2").arg(grainlab_, arguments.join(QLatin1Char(' '))));
-    process_->start(grainlab_, arguments);
+    command_->start(grainlab_, arguments, logPath);
     poll_.start();
     updateControls();
     updateProgressText();
@@ -418,27 +395,20 @@ bool StabilityView::start(QString* error) {
 }
 
 void StabilityView::stop() {
-    if (process_ && process_->processId() > 0) {
-        ::kill(pid_t(process_->processId()), SIGINT);
-        stopping_ = true;
+    if (command_->stop()) {
         status_->setText(tr("Stopping: the running cells end; the cells done are kept…"));
         stopButton_->setEnabled(false);
     }
 }
 
 void StabilityView::processEnded(int exitStatus) {
-    if (!process_) {
-        return;
-    }
     if (!isVisible()) {
         poll_.stop();
     }
-    process_->deleteLater();
-    process_ = nullptr;
     lastExit_ = exitStatus;
     if (exitStatus == 0) {
-        status_->setText(tr("The map finished. %1").arg(stabilityLogSummary(logPath_)));
-    } else if (exitStatus == 130 || stopping_) {
+        status_->setText(tr("The map finished. %1").arg(stabilityLogSummary(command_->logPath())));
+    } else if (exitStatus == 130 || command_->stopping()) {
         // 130: the map stopped its cells; another status after Stop: stopped before it had
         // started any.
         status_->setText(tr("Stopped: the cells done are kept; Start continues the map."));
@@ -447,7 +417,7 @@ void StabilityView::processEnded(int exitStatus) {
     } else {
         status_->setText(tr("The map failed (exit status %1):\n%2")
                              .arg(exitStatus)
-                             .arg(stabilityLogSummary(logPath_)));
+                             .arg(stabilityLogSummary(command_->logPath())));
     }
     rescan();
     updateControls();
@@ -632,7 +602,7 @@ void StabilityView::updateControls() {
     const bool folderMap = state_ && state_->kind == StabilityFolder::Kind::Map;
     startButton_->setEnabled(!isRunning && !folder_.isEmpty() && state_ && !refused &&
                              (!choice_.isEmpty() || folderMap));
-    stopButton_->setEnabled(isRunning && !stopping_);
+    stopButton_->setEnabled(isRunning && !command_->stopping());
     folderButton_->setEnabled(!isRunning);
     preset_->setEnabled(!isRunning);
 }
@@ -650,7 +620,7 @@ void StabilityView::updateProgressText() {
         const int doneHere = done - finishedAtStart_;
         const double eta = doneHere > 0 ? elapsed / doneHere * (total - done) : -1.0;
         text += tr(" · running %1 · ETA %2").arg(formatDuration(elapsed), formatDuration(eta));
-        const QString own = stabilityLogProgress(logPath_);
+        const QString own = stabilityLogProgress(command_->logPath());
         if (!own.isEmpty()) {
             text += QStringLiteral(" · ") + own;
         }

@@ -25,11 +25,12 @@
 
 class QComboBox;
 class QLabel;
-class QProcess;
 class QProgressBar;
 class QPushButton;
 
 namespace grainlab::ui {
+
+class CommandProcess;
 
 class HeatMapView;
 
@@ -134,10 +135,8 @@ private:
     QPoint selected_{-1, -1};   ///< the square clicked last
     int lastX_ = 0, lastY_ = 3; ///< the axes' combo indices before the latest change
 
-    QProcess* process_ = nullptr;
-    QString logPath_;
+    CommandProcess* command_; ///< the `grainlab stability` process, its output into a log file
     std::optional<int> lastExit_;
-    bool stopping_ = false; ///< Stop was pressed for the running map
     QElapsedTimer sinceStart_;
     int finishedAtStart_ = 0;
 

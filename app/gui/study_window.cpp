@@ -2,9 +2,6 @@
 #include "gui/study_window.h"
 
 #include <cmath>
-#include <csignal>
-
-#include <signal.h>
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -16,7 +13,6 @@
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QProcess>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QTabWidget>
@@ -26,25 +22,15 @@
 #include "grainlab/study_file.h"
 #include "grainlab/ui/plot_view.h"
 #include "grainlab/ui/study_figures.h"
+#include "gui/command_process.h"
 #include "gui/duration_text.h"
 #include "gui/stability_view.h"
+#include "gui/ui_text.h"
 
 namespace grainlab::ui {
 namespace {
 
 constexpr int kPollMs = 1000; ///< how often the folder is read while the study runs
-
-QString q(const std::string& s) {
-    return QString::fromStdString(s);
-}
-
-QString number(double v) {
-    return QString::number(v, 'g', 4);
-}
-
-QString yesNo(bool v) {
-    return v ? QObject::tr("yes") : QObject::tr("no");
-}
 
 const MetricSummary* findMetric(const SettingSummary& s, const std::string& test,
                                 const std::string& metric) {
@@ -78,8 +64,15 @@ void setItems(QComboBox* box, const QStringList& items) {
 StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     : QWidget(parent, Qt::Window),
       grainlab_(grainlab.isEmpty() ? QCoreApplication::applicationFilePath() : grainlab),
-      workerContext_(new QObject) {
+      command_(new CommandProcess(this)), workerContext_(new QObject) {
     setWindowTitle(tr("GrainLab — Study"));
+    connect(command_, &CommandProcess::ended, this,
+            [this](int code, const QString&, const QString& startError) {
+                if (!startError.isEmpty()) {
+                    status_->setText(tr("Could not start %1: %2").arg(grainlab_, startError));
+                }
+                processEnded(code);
+            });
     workerContext_->moveToThread(&worker_);
     worker_.start();
     poll_.setInterval(kPollMs);
@@ -197,13 +190,7 @@ StudyWindow::~StudyWindow() {
     worker_.quit();
     worker_.wait();
     delete workerContext_;
-    if (process_ && process_->state() != QProcess::NotRunning) {
-        // The study goes on without the window (its output goes to a file, not to us): the
-        // process object is let go, so that its destructor does not kill it.
-        disconnect(process_, nullptr, this, nullptr);
-        process_->setParent(nullptr);
-        process_ = nullptr;
-    }
+    // A running study goes on without the window (its output goes to a file, not to us).
 }
 
 void StudyWindow::setExecutable(const QString& grainlab) {
@@ -286,7 +273,7 @@ void StudyWindow::setStudyFolder(const QString& folder) {
 }
 
 bool StudyWindow::running() const {
-    return process_ != nullptr;
+    return command_->running();
 }
 
 bool StudyWindow::start(QString* error) {
@@ -304,30 +291,17 @@ bool StudyWindow::start(QString* error) {
     }
     // The study's own output (its summary, a failed run's name) goes to a file: the study must
     // not depend on the window's pipes, since it goes on when the window closes.
-    logPath_ = QDir(QDir::tempPath())
-                   .filePath(QStringLiteral("grainlab-study-%1-%2.log")
-                                 .arg(q(spec_.name))
-                                 .arg(QCoreApplication::applicationPid()));
-    process_ = new QProcess(this);
-    process_->setStandardInputFile(QProcess::nullDevice());
-    process_->setProcessChannelMode(QProcess::MergedChannels);
-    process_->setStandardOutputFile(logPath_, QIODevice::Truncate);
-    connect(process_, &QProcess::finished, this, [this](int code, QProcess::ExitStatus status) {
-        processEnded(status == QProcess::NormalExit ? code : -1);
-    });
-    connect(process_, &QProcess::errorOccurred, this, [this](QProcess::ProcessError e) {
-        if (e == QProcess::FailedToStart) {
-            status_->setText(tr("Could not start %1: %2").arg(grainlab_, process_->errorString()));
-            processEnded(-1);
-        }
-    });
+    const QString logPath = QDir(QDir::tempPath())
+                                .filePath(QStringLiteral("grainlab-study-%1-%2.log")
+                                              .arg(q(spec_.name))
+                                              .arg(QCoreApplication::applicationPid()));
     lastExit_.reset();
-    stopping_ = false;
     finishedAtStart_ = progress_ ? progress_->finishedCount() : 0;
     sinceStart_.start();
     status_->setText(tr("Running: %1 study %2 --out %3").arg(grainlab_, studyFile_, folder_));
-    process_->start(grainlab_,
-                    {QStringLiteral("study"), studyFile_, QStringLiteral("--out"), folder_});
+    command_->start(grainlab_,
+                    {QStringLiteral("study"), studyFile_, QStringLiteral("--out"), folder_},
+                    logPath);
     poll_.start();
     updateControls();
     updateProgressText();
@@ -335,25 +309,18 @@ bool StudyWindow::start(QString* error) {
 }
 
 void StudyWindow::stop() {
-    if (process_ && process_->processId() > 0) {
-        ::kill(pid_t(process_->processId()), SIGINT);
-        stopping_ = true;
+    if (command_->stop()) {
         status_->setText(tr("Stopping: the runs write their checkpoints…"));
         stopButton_->setEnabled(false);
     }
 }
 
 void StudyWindow::processEnded(int exitStatus) {
-    if (!process_) {
-        return;
-    }
     poll_.stop();
-    process_->deleteLater();
-    process_ = nullptr;
     lastExit_ = exitStatus;
     if (exitStatus == 0) {
         status_->setText(tr("The study finished. %1").arg(logTail()));
-    } else if (exitStatus == 130 || stopping_) {
+    } else if (exitStatus == 130 || command_->stopping()) {
         // 130: the study stopped its runs; another status after Stop: stopped before it had
         // started any (Ctrl-C while it was still preparing its folder).
         status_->setText(tr("Stopped: the runs wrote checkpoints; Start continues the study."));
@@ -370,7 +337,7 @@ void StudyWindow::processEnded(int exitStatus) {
 }
 
 QString StudyWindow::logTail() const {
-    QFile file(logPath_);
+    QFile file(command_->logPath());
     if (!file.open(QIODevice::ReadOnly)) {
         return {};
     }

@@ -24,13 +24,13 @@
 
 class QComboBox;
 class QLabel;
-class QProcess;
 class QProgressBar;
 class QPushButton;
 class QTabWidget;
 
 namespace grainlab::ui {
 
+class CommandProcess;
 class PlotView;
 class StabilityView;
 
@@ -128,10 +128,8 @@ private:
     bool scanning_ = false;
     bool rescanWanted_ = false;
 
-    QProcess* process_ = nullptr;
-    QString logPath_;
+    CommandProcess* command_; ///< the `grainlab study` process, its output into a log file
     std::optional<int> lastExit_;
-    bool stopping_ = false; ///< Stop was pressed for the running study
     QElapsedTimer sinceStart_;
     int finishedAtStart_ = 0;
 

@@ -10,14 +10,14 @@
 
 #include <fmt/format.h>
 
-#include "cli/atomic_file.h"
+#include "common/atomic_file.h"
 #include "grainlab/run_file.h"
 #include "grainlab/shear_metrics.h"
 #include "grainlab/ui/colour_maps.h"
 #include "grainlab/ui/figure_export.h"
 #include "grainlab/ui/plot_painter.h"
 #include "grainlab/ui/scene_renderer.h"
-#include "gui/run_file_view.h"
+#include "common/run_file_view.h"
 #include "report/report_page.h"
 
 namespace grainlab {

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/atomic_file.h"
+#include "common/atomic_file.h"
 
 namespace grainlab {
 namespace fs = std::filesystem;

@@ -8,13 +8,12 @@
 
 #include <fmt/format.h>
 
-#include "cli/atomic_file.h"
-#include "cli/progress_bar.h"
+#include "common/atomic_file.h"
+#include "common/job_list.h"
+#include "common/process_pool.h"
+#include "common/progress_bar.h"
 #include "grainlab/strict_json.h"
-#include "stability/servo_cell.h"
-#include "stability/stability_cell.h"
-#include "study/job_list.h"
-#include "study/process_pool.h"
+#include "stability/map_point_command.h"
 
 namespace grainlab {
 

@@ -2,11 +2,11 @@
 // `grainlab stability [--preset NAME | FILE] --out DIR`: the stability maps (docs/stability.md).
 // The preset's "kind" names the map: the time step of the explicit integration (the default),
 // the servo ("servo", servo_map.h) or the contact geometry ("geometry", geometry_map.h). Every
-// cell of a time-step or servo map is one `grainlab stability cell` process run through the
-// study's local pool (study/process_pool.h), with one progress bar for the map; each writes
-// DIR/cells/<id>.json atomically, so a killed map resumes with the same command and redoes no
-// finished cell. `--emit slurm|parallel` writes the cells as a Slurm job array or a GNU parallel
-// job list instead (study/job_list.h); `grainlab stability collect DIR` writes the tables
+// map point of a time-step or servo map is one `grainlab stability cell` process
+// (map_point_command.h) run through the common local pool (common/process_pool.h), with one
+// progress bar for the map; each writes DIR/cells/<id>.json atomically, so a killed map resumes
+// with the same command and redoes no finished map point. `--emit slurm|parallel` writes the map
+// points as a Slurm job array or a GNU parallel job list instead (common/job_list.h); `grainlab stability collect DIR` writes the tables
 // (limits.csv and accuracy.csv; servo_limits.csv and servo_runs.csv) and, in GUI builds, the
 // figures. The geometry map is cheap and runs in this process. Main thread.
 

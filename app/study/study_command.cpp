@@ -9,14 +9,14 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/atomic_file.h"
-#include "cli/progress_bar.h"
-#include "cli/run_cost.h"
+#include "common/atomic_file.h"
+#include "common/job_list.h"
+#include "common/process_pool.h"
+#include "common/progress_bar.h"
+#include "common/run_cost.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/study_file.h"
-#include "study/job_list.h"
-#include "study/process_pool.h"
 #include "study/study_files.h"
 
 namespace grainlab {

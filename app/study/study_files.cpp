@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/atomic_file.h"
-#include "cli/run_cost.h"
+#include "common/atomic_file.h"
+#include "common/run_cost.h"
 #include "grainlab/csv_series.h"
 #include "grainlab/run_file.h"
 

@@ -11,7 +11,7 @@
 #include <unistd.h>
 
 #include "cli_test_files.h"
-#include "cli/run_cost.h"
+#include "common/run_cost.h"
 
 namespace grainlab {
 namespace {

@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/atomic_file.h"
+#include "common/atomic_file.h"
 #include "grainlab/shear_metrics.h"
 #include "grainlab/statistics.h"
 #include "grainlab/ui/scene_view.h"

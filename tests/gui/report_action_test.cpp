@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/atomic_file.h"
+#include "common/atomic_file.h"
 #include "gui/main_window.h"
 #include "window_test_support.h"
 

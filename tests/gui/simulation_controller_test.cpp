@@ -12,6 +12,7 @@
 
 #include "gui/simulation_controller.h"
 #include "test_scenes.h"
+#include "window_test_support.h"
 
 namespace grainlab::ui {
 namespace {
@@ -53,17 +54,7 @@ private:
     SnapshotPtr scene_;
 };
 
-template <class Predicate>
-bool waitFor(Predicate done, int timeoutMs = 10000) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
-    while (!done()) {
-        if (std::chrono::steady_clock::now() > end) {
-            return false;
-        }
-        QTest::qWait(5);
-    }
-    return true;
-}
+using window_tests::waitFor;
 
 TEST(SimulationController, StepAdvancesExactlyThenPauses) {
     SimulationController c;

@@ -24,23 +24,14 @@
 #include "grainlab/ui/plot_view.h"
 #include "gui/main_window.h"
 #include "gui/study_window.h"
+#include "window_test_support.h"
 
 namespace grainlab::ui {
 namespace {
 
 const QString kTinyStudy = QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/studies/tiny.json");
 
-template <class Predicate>
-bool waitFor(Predicate done, int timeoutMs) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
-    while (!done()) {
-        if (std::chrono::steady_clock::now() > end) {
-            return false;
-        }
-        QTest::qWait(20);
-    }
-    return true;
-}
+using window_tests::waitFor;
 
 bool near(QColor a, QColor b, int tolerance = 10) {
     return std::abs(a.red() - b.red()) <= tolerance &&

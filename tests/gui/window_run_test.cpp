@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/atomic_file.h"
+#include "common/atomic_file.h"
 #include "cli/run_output.h"
 #include "grainlab/csv_series.h"
 #include "grainlab/experiment_file.h"

@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/job_list.h"
 #include "grainlab/stability_map.h"
-#include "study/job_list.h"
 
 namespace grainlab {
 namespace {

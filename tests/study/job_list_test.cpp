@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "study/job_list.h"
+#include "common/job_list.h"
 
 namespace grainlab {
 namespace {

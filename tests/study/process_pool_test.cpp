@@ -12,7 +12,7 @@
 
 #include "test_folders.h"
 
-#include "study/process_pool.h"
+#include "common/process_pool.h"
 
 namespace grainlab {
 namespace {

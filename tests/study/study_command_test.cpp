@@ -29,6 +29,7 @@ namespace grainlab {
 namespace {
 
 namespace fs = std::filesystem;
+using test::childrenOf;
 using test::freshFolder;
 using test::text;
 
@@ -209,25 +210,6 @@ TEST(StudyCommand, TinyStudyWritesEveryFileAndTheNumbersAddUp) {
         }
     }
     EXPECT_NE(text(dir / "recommended.json").find("\"grains\""), std::string::npos);
-}
-
-/// The pids of the processes whose parent is `parent` (from /proc).
-std::vector<pid_t> childrenOf(pid_t parent) {
-    std::vector<pid_t> out;
-    for (const auto& entry : fs::directory_iterator("/proc")) {
-        const std::string name = entry.path().filename();
-        if (name.find_first_not_of("0123456789") != std::string::npos) {
-            continue;
-        }
-        std::istringstream stat(text(entry.path() / "stat"));
-        std::string pid, comm, state;
-        pid_t ppid = 0;
-        stat >> pid >> comm >> state >> ppid;
-        if (ppid == parent) {
-            out.push_back(pid_t(std::stoi(name)));
-        }
-    }
-    return out;
 }
 
 TEST(StudyCommand, AKilledStudyResumesWithoutRedoingFinishedRuns) {

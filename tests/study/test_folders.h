@@ -1,10 +1,11 @@
 #pragma once
 // Folders and files for the study tests: a fresh folder per test process (ctest runs the tests
-// side by side) and a file's whole text.
+// side by side), a file's whole text, and the processes the pool started (from /proc).
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -22,6 +23,33 @@ inline std::string text(const std::filesystem::path& p) {
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
+}
+
+/// The pids of the processes whose parent is `parent` (from /proc).
+inline std::vector<pid_t> childrenOf(pid_t parent) {
+    std::vector<pid_t> out;
+    for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+        const std::string name = entry.path().filename();
+        if (name.find_first_not_of("0123456789") != std::string::npos) {
+            continue;
+        }
+        std::istringstream stat(text(entry.path() / "stat"));
+        std::string pid, comm, state;
+        pid_t ppid = 0;
+        stat >> pid >> comm >> state >> ppid;
+        if (ppid == parent) {
+            out.push_back(pid_t(std::stoi(name)));
+        }
+    }
+    return out;
+}
+
+/// Whether `pid` still runs: neither gone nor a zombie waiting to be reaped.
+inline bool processRuns(pid_t pid) {
+    std::istringstream stat(text(std::filesystem::path("/proc") / std::to_string(pid) / "stat"));
+    std::string id, comm, state;
+    stat >> id >> comm >> state;
+    return !state.empty() && state != "Z" && state != "X";
 }
 
 } // namespace grainlab::test

@@ -2,10 +2,8 @@
 // One cell of the stability map: builds its scene (stability_scene.h), bisects the largest
 // stable time step with the probe (stability_probe.h, stability_bisection.h), measures the
 // energy-balance residual with damping off at fractions of that limit, and records the engine's
-// own estimate (time_step.h) beside it. `grainlab stability cell DIR --cell ID` runs one cell of
-// a map folder and writes DIR/cells/ID.json atomically. Main thread.
-
-#include <string>
+// own estimate (time_step.h) beside it. No files: `grainlab stability cell` writes the result
+// (app/stability/map_point_command.h). Main thread.
 
 #include "grainlab/stability_map.h"
 
@@ -17,9 +15,5 @@ ProbeSettings stabilityProbeSettings(const StabilityMapSpec& spec, const Stabili
 
 /// Measures one cell (seconds of work; no files).
 StabilityCellResult measureStabilityCell(const StabilityMapSpec& spec, const StabilityCell& cell);
-
-/// `grainlab stability cell DIR --cell ID`: measures the cell of the map in DIR (its
-/// stability.json) unless DIR/cells/ID.json exists already; 0 on success.
-int runStabilityCellCommand(const std::string& folder, const std::string& cellId, bool quiet);
 
 } // namespace grainlab

@@ -1,4 +1,4 @@
-#include "stability/servo_cell.h"
+#include "grainlab/servo_cell.h"
 
 #include <chrono>
 #include <filesystem>
@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "cli/atomic_file.h"
 #include "grainlab/assembly.h"
 #include "grainlab/equilibrium.h"
 #include "grainlab/scenes/compacted_scene.h"
@@ -125,34 +124,6 @@ ServoCellResult measureServoCell(const ServoMapSpec& spec, const ServoCell& cell
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
-}
-
-int runServoCellCommand(const std::string& folder, const ServoMapSpec& spec,
-                        const std::string& cellId, bool quiet) {
-    const fs::path result = fs::path(folder) / "cells" / (cellId + ".json");
-    if (fs::exists(result)) {
-        if (!quiet) {
-            fmt::print("grainlab stability cell {}: done already ({})\n", cellId, result.string());
-        }
-        return 0;
-    }
-    for (const ServoCell& cell : servoCells(spec)) {
-        if (cell.id != cellId) {
-            continue;
-        }
-        const ServoCellResult r = measureServoCell(spec, cell);
-        fs::create_directories(result.parent_path());
-        writeFileAtomically(result.string(), servoCellResultJson(r));
-        if (!quiet) {
-            fmt::print("grainlab stability cell {}: largest stable gain {:.4g} ({} above it), "
-                       "{} runs, {:.1f} s\n",
-                       cellId, r.limit.limit, servoResponseName(r.aboveLimit), r.runs.size(),
-                       r.seconds);
-        }
-        return 0;
-    }
-    throw std::runtime_error(fmt::format("stability cell {}: no such cell in {}", cellId,
-                                         (fs::path(folder) / "stability.json").string()));
 }
 
 } // namespace grainlab

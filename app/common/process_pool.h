@@ -10,7 +10,8 @@
 // Used on the calling thread (the study command's main thread, or the Study window's worker
 // thread). While run() is going it polls `stop`: once set, no new process starts and the
 // running ones are sent SIGINT (grainlab run then writes a checkpoint and exits), and run()
-// returns after they have ended.
+// returns after they have ended. A run also ends (SIGTERM) when the pool's process or calling
+// thread dies, kill -9 included, so that no run outlives its pool.
 
 #include <atomic>
 #include <functional>

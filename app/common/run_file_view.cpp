@@ -1,5 +1,5 @@
 // See run_file_view.h.
-#include "gui/run_file_view.h"
+#include "common/run_file_view.h"
 
 #include <algorithm>
 #include <cmath>

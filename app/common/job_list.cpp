@@ -1,4 +1,4 @@
-#include "study/job_list.h"
+#include "common/job_list.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "cli/run_cost.h"
+#include "common/run_cost.h"
 
 #include <filesystem>
 #include <fstream>
@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/atomic_file.h"
+#include "common/atomic_file.h"
 
 namespace grainlab {
 

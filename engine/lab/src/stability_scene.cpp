@@ -1,4 +1,4 @@
-#include "stability/stability_scene.h"
+#include "grainlab/stability_scene.h"
 
 #include <cmath>
 #include <numbers>

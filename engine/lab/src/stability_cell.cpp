@@ -1,4 +1,4 @@
-#include "stability/stability_cell.h"
+#include "grainlab/stability_cell.h"
 
 #include <chrono>
 #include <filesystem>
@@ -6,11 +6,10 @@
 
 #include <fmt/format.h>
 
-#include "cli/atomic_file.h"
 #include "grainlab/stability_bisection.h"
 #include "grainlab/stability_probe.h"
+#include "grainlab/stability_scene.h"
 #include "grainlab/time_step.h"
-#include "stability/stability_scene.h"
 
 namespace grainlab {
 
@@ -57,40 +56,6 @@ StabilityCellResult measureStabilityCell(const StabilityMapSpec& spec, const Sta
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
-}
-
-int runStabilityCellCommand(const std::string& folder, const std::string& cellId, bool quiet) {
-    const fs::path dir = fs::absolute(folder).lexically_normal();
-    const fs::path preset = dir / "stability.json";
-    if (!fs::exists(preset)) {
-        throw std::runtime_error(fmt::format(
-            "stability cell {}: no stability.json: not a stability map folder", dir.string()));
-    }
-    const StabilityMapSpec spec = readStabilityPreset(preset.string());
-    const fs::path result = dir / "cells" / (cellId + ".json");
-    if (fs::exists(result)) {
-        if (!quiet) {
-            fmt::print("grainlab stability cell {}: done already ({})\n", cellId, result.string());
-        }
-        return 0;
-    }
-    for (const StabilityCell& cell : stabilityCells(spec)) {
-        if (cell.id != cellId) {
-            continue;
-        }
-        const StabilityCellResult r = measureStabilityCell(spec, cell);
-        fs::create_directories(result.parent_path());
-        writeFileAtomically(result.string(), cellResultJson(r));
-        if (!quiet) {
-            fmt::print("grainlab stability cell {}: limit {:.4g} sqrt(m_min/k_n) ({}), estimate "
-                       "{:.4g}, {} probes, {:.1f} s\n",
-                       cellId, r.limit.limit, blowUpName(r.limit.detector), r.estimate,
-                       r.limit.probes, r.seconds);
-        }
-        return 0;
-    }
-    throw std::runtime_error(
-        fmt::format("stability cell {}: no such cell in {}", cellId, preset.string()));
 }
 
 } // namespace grainlab

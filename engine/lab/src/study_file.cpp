@@ -138,49 +138,10 @@ std::vector<std::string> studyMetricNames() {
     return out;
 }
 
-StudySpec parseStudyText(const std::string& text, const std::string& sourceName,
-                         const std::string& folder) {
-    const Json root = parseStrictJson(text, sourceName);
-    const JsonSection top(sourceName, root, "", kTopKeys);
-    StudySpec spec;
-    spec.sourcePath = sourceName;
-    spec.name = top.text("name", "study");
-    if (spec.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                    "0123456789-_.") != std::string::npos) {
-        top.refuse("name", root["name"], "a name of letters, digits, '-', '_' and '.'");
-    }
-    if (top.has("description")) {
-        top.text("description", "");
-    }
+namespace {
 
-    // The base experiment: a path (relative to the study file) or an object written inline.
-    if (!top.has("base")) {
-        top.missing("base", "a path to an experiment file, or an experiment object");
-    }
-    Json inlined = root;
-    const Json& base = top.at("base");
-    if (base.is_string()) {
-        const fs::path p = fs::path(base.get<std::string>());
-        const std::string path = (p.is_absolute() ? p : fs::path(folder) / p).string();
-        spec.baseExperiment = readInputFile(path, "experiment file");
-        spec.baseSource = path;
-        inlined["base"] = parseStrictJson(spec.baseExperiment, path);
-    } else if (base.is_object()) {
-        spec.baseExperiment = base.dump(2);
-        spec.baseSource = sourceName + ": base";
-    } else {
-        top.refuse("base", base,
-                   fmt::format("a path to an experiment file, or an experiment object (got {})",
-                               jsonTypeName(base)));
-    }
-    try {
-        parseExperimentText(spec.baseExperiment, spec.baseSource);
-    } catch (const ExperimentFileError& e) {
-        throw ExperimentFileError(sourceName, "base." + e.keyPath,
-                                  fmt::format("base experiment: {}", e.what()));
-    }
-
-    // Knobs, in the order of the knob table.
+/// The study file's "knobs", in the order of the knob table.
+void readStudyKnobs(const JsonSection& top, const std::string& sourceName, StudySpec& spec) {
     const JsonSection knobs =
         top.child("knobs", knobNames(), true, "an object of knobs, each an array of levels");
     if (top.at("knobs").empty()) {
@@ -206,21 +167,10 @@ StudySpec parseStudyText(const std::string& text, const std::string& sourceName,
         }
         spec.knobs.push_back(std::move(knob));
     }
+}
 
-    spec.design =
-        top.choice("design", {"one_at_a_time", "grid"}, std::string("one_at_a_time")) == "grid"
-            ? StudyDesign::Grid
-            : StudyDesign::OneAtATime;
-    const JsonSection reference = top.child("reference", knobNames(), false);
-    for (KnobKind kind : allKnobs()) {
-        const std::string name = knobName(kind);
-        if (reference.has(name)) {
-            spec.reference[kind] =
-                readLevel(sourceName, reference.path(name), reference.at(name), kind);
-        }
-    }
-
-    // Seeds: a count or a list.
+/// The study file's "seeds": a count or a list.
+void readStudySeeds(const JsonSection& top, StudySpec& spec) {
     if (top.has("seeds")) {
         const Json& s = top.at("seeds");
         if (s.is_array()) {
@@ -247,10 +197,11 @@ StudySpec parseStudyText(const std::string& text, const std::string& sourceName,
             }
         }
     }
-    spec.costMeasure = top.choice("cost", {"cpu_seconds", "wall_seconds", "grain_steps"},
-                                  std::string("cpu_seconds"));
+}
 
-    // Tolerances: the defaults, each replaced by the file's.
+/// The study file's "metrics" (tolerances: the defaults, each replaced by the file's) and
+/// "deciding".
+void readStudyTolerances(const JsonSection& top, StudySpec& spec) {
     spec.tolerances = defaultTolerances();
     const std::vector<std::string> metricNames = studyMetricNames();
     const JsonSection metrics = top.child("metrics", metricNames, false);
@@ -294,6 +245,72 @@ StudySpec parseStudyText(const std::string& text, const std::string& sourceName,
             spec.deciding.push_back(name);
         }
     }
+}
+
+} // namespace
+
+StudySpec parseStudyText(const std::string& text, const std::string& sourceName,
+                         const std::string& folder) {
+    const Json root = parseStrictJson(text, sourceName);
+    const JsonSection top(sourceName, root, "", kTopKeys);
+    StudySpec spec;
+    spec.sourcePath = sourceName;
+    spec.name = top.text("name", "study");
+    if (spec.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                    "0123456789-_.") != std::string::npos) {
+        top.refuse("name", root["name"], "a name of letters, digits, '-', '_' and '.'");
+    }
+    if (top.has("description")) {
+        top.text("description", "");
+    }
+
+    // The base experiment: a path (relative to the study file) or an object written inline.
+    if (!top.has("base")) {
+        top.missing("base", "a path to an experiment file, or an experiment object");
+    }
+    Json inlined = root;
+    const Json& base = top.at("base");
+    if (base.is_string()) {
+        const fs::path p = fs::path(base.get<std::string>());
+        const std::string path = (p.is_absolute() ? p : fs::path(folder) / p).string();
+        spec.baseExperiment = readInputFile(path, "experiment file");
+        spec.baseSource = path;
+        inlined["base"] = parseStrictJson(spec.baseExperiment, path);
+    } else if (base.is_object()) {
+        spec.baseExperiment = base.dump(2);
+        spec.baseSource = sourceName + ": base";
+    } else {
+        top.refuse("base", base,
+                   fmt::format("a path to an experiment file, or an experiment object (got {})",
+                               jsonTypeName(base)));
+    }
+    try {
+        parseExperimentText(spec.baseExperiment, spec.baseSource);
+    } catch (const ExperimentFileError& e) {
+        throw ExperimentFileError(sourceName, "base." + e.keyPath,
+                                  fmt::format("base experiment: {}", e.what()));
+    }
+
+    readStudyKnobs(top, sourceName, spec);
+
+    spec.design =
+        top.choice("design", {"one_at_a_time", "grid"}, std::string("one_at_a_time")) == "grid"
+            ? StudyDesign::Grid
+            : StudyDesign::OneAtATime;
+    const JsonSection reference = top.child("reference", knobNames(), false);
+    for (KnobKind kind : allKnobs()) {
+        const std::string name = knobName(kind);
+        if (reference.has(name)) {
+            spec.reference[kind] =
+                readLevel(sourceName, reference.path(name), reference.at(name), kind);
+        }
+    }
+
+    readStudySeeds(top, spec);
+    spec.costMeasure = top.choice("cost", {"cpu_seconds", "wall_seconds", "grain_steps"},
+                                  std::string("cpu_seconds"));
+
+    readStudyTolerances(top, spec);
     spec.sourceText = inlined.dump(2) + "\n";
     return spec;
 }

@@ -1,4 +1,4 @@
-#include "study/process_pool.h"
+#include "common/process_pool.h"
 
 #include <cerrno>
 #include <chrono>
@@ -9,6 +9,7 @@
 #include <thread>
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -36,6 +37,7 @@ pid_t start(const PoolJob& job) {
         argv.push_back(const_cast<char*>(a.c_str()));
     }
     argv.push_back(nullptr);
+    const pid_t pool = ::getpid();
     const pid_t pid = ::fork();
     if (pid < 0) {
         const int e = errno;
@@ -46,6 +48,14 @@ pid_t start(const PoolJob& job) {
         // The child: its own process group, so that a Ctrl-C at the terminal reaches the pool
         // only, and the pool decides what the runs get.
         ::setpgid(0, 0);
+        // A run ends with its pool: a killed pool (kill -9) would otherwise leave the run going
+        // as an orphan that still holds its run folder's lock and log. SIGTERM lets the run stop
+        // at a step as on Ctrl-C. The signal is sent when the forking thread ends, so the pool
+        // must be run from a thread that lives as long as its runs (ProcessPool::run blocks).
+        // If the pool died before the prctl took effect, getppid() is no longer the pool's pid.
+        if (::prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || ::getppid() != pool) {
+            ::_exit(128 + SIGTERM);
+        }
         ::dup2(log, STDOUT_FILENO);
         ::dup2(log, STDERR_FILENO);
         const int devnull = ::open("/dev/null", O_RDONLY);

@@ -3,8 +3,8 @@
 // shape with the shared compacted scene, equilibrates it at the shear friction, then shears it
 // once per gain of the preset's grid with the lateral servo at the cell's interval, classifying
 // each run (servo_probe.h), and bisects the largest stable gain between the grid's last stable
-// and first unstable gains. `grainlab stability cell DIR --cell ID` runs one cell of a servo map
-// folder and writes DIR/cells/ID.json atomically. Main thread.
+// and first unstable gains. No files: `grainlab stability cell` writes the result
+// (app/stability/map_point_command.h). Main thread.
 
 #include "grainlab/servo_map.h"
 #include "grainlab/simulation_state.h"
@@ -24,10 +24,5 @@ double affineLateralStiffness(const SimulationState& state);
 
 /// Measures one cell (seconds to minutes of work; no files).
 ServoCellResult measureServoCell(const ServoMapSpec& spec, const ServoCell& cell);
-
-/// Measures the cell `cellId` of the servo map in `folder` unless its result exists; 0 on
-/// success.
-int runServoCellCommand(const std::string& folder, const ServoMapSpec& spec,
-                        const std::string& cellId, bool quiet);
 
 } // namespace grainlab
