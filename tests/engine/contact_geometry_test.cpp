@@ -228,8 +228,8 @@ std::array<int, 2> referenceArcPair(const RandomPair& p) {
     return chosen;
 }
 
-// The oracle for the engine's fast contact (ovalContact: the facing-pair kernel, then the
-// quadrant kernel, then the reference): on random pairs at every orientation, from near-tangent
+// The oracle for the engine's contact (ovalContact: the quadrant kernel, then the reference
+// where it asks, as the pair loop decides): on random pairs at every orientation, from near-tangent
 // (|overlap| down to 1e-12 W) to deep (0.3 W) overlaps, ovals of two aspect ratios and the disk
 // limit (aspect 1, against ovals and disks), it chooses the reference's arc pair: its overlap
 // has the same bits as that pair's, its normal and contact point agree to 4e-16 (the normal is
@@ -285,48 +285,6 @@ TEST(ContactGeometry, FastContactEqualsSixteenPairBruteForceEverywhere) {
     EXPECT_EQ(deep, 12000);
 }
 
-// The facing-pair kernel (the engine's vectorised path) decides almost every pair alone, and
-// where it decides, it has the bits of the quadrant kernel (the min-overlap rule over the same 4
-// pairs), so that handing the rest to the quadrant kernel changes no result.
-TEST(ContactGeometry, FacingPairKernelDecidesAsTheQuadrantKernel) {
-    Random random(29);
-    int decided = 0, shallow = 0, shallowDecided = 0;
-    const int trials = 200000;
-    for (int trial = 0; trial < trials; ++trial) {
-        const RandomPair p =
-            randomPair(random, trial % 3 == 0 ? 0.4 : (trial % 3 == 1 ? 0.6 : 1.0));
-        const double cA = std::cos(p.thetaA), sA = std::sin(p.thetaA);
-        const double cB = std::cos(p.thetaB), sB = std::sin(p.thetaB);
-        const OvalArcs a = ovalArcs(p.A), b = ovalArcs(p.B);
-        const FacingPairContact f = ovalContactFacingPair(a, cA, sA, b, cB, sB, p.dx, p.dy);
-        const QuadrantContact q = ovalContactQuadrant(a, cA, sA, b, cB, sB, p.dx, p.dy);
-        const double scale = std::min(p.A.width, p.B.width);
-        const bool isShallow = q.geometry.overlap > 0.0 && q.geometry.overlap < 0.01 * scale;
-        shallow += isShallow ? 1 : 0;
-        if (f.undecided) {
-            continue;
-        }
-        ++decided;
-        shallowDecided += isShallow ? 1 : 0;
-        ASSERT_FALSE(q.needsReference) << "trial " << trial;
-        ASSERT_EQ(f.geometry.overlap, q.geometry.overlap) << "trial " << trial;
-        ASSERT_EQ(f.geometry.normalX, q.geometry.normalX) << "trial " << trial;
-        ASSERT_EQ(f.geometry.normalY, q.geometry.normalY) << "trial " << trial;
-        ASSERT_EQ(f.geometry.pointX, q.geometry.pointX) << "trial " << trial;
-        ASSERT_EQ(f.geometry.pointY, q.geometry.pointY) << "trial " << trial;
-    }
-    // The sample is wide (apart by up to 0.3 W, where often no facing pair is admissible and
-    // the reference decides, as before; deep overlaps); touching below 1 % of W (a packing's
-    // overlaps are ~0.1 %) it decides all but 1 in 1000 or fewer.
-    EXPECT_GT(decided, 0.7 * trials);
-    EXPECT_GT(shallow, 5000);
-    EXPECT_GE(shallowDecided, shallow - shallow / 1000);
-}
-
-// One form at several widths: oneFormArcs finds the unit arcs, and a * unit gives each
-// shape's own arcs to round-off (each width's construction, a bisection and an atan2, rounds
-// its own way: up to 3e-15 of a apart); other forms, disks among ovals, or no shapes: no one
-// form.
 TEST(ContactGeometry, OneFormArcsScaleToEachShapesArcs) {
     for (const OvalClosure closure : {OvalClosure::EqualArea, OvalClosure::EndRadiusRatio}) {
         for (const double aspect : {0.35, 0.6, 0.9, 1.0}) {

@@ -260,121 +260,13 @@ inline QuadrantContact ovalContactQuadrant(const OvalArcs& A, double cA, double 
                                std::min(A.width, B.width));
 }
 
-namespace detail {
-
-/// True when the direction of w (length^2 `w2` > 0) lies in an arc's range, given `along` =
-/// w . (the arc's axis direction) and `limit` = the range's cosine minus the tolerance:
-/// along >= limit |w|, decided on squares so that no square root is needed.
-inline bool admitsBySquares(double along, double limit, double w2) {
-    const double alongSquared = along * along, limitSquared = limit * limit * w2;
-    // & and |, not && and ||: no branches (vectorised loop).
-    const bool forward = along >= 0.0;
-    return (forward & ((limit <= 0.0) | (alongSquared >= limitSquared))) |
-           (!forward & (limit < 0.0) & (alongSquared <= limitSquared));
-}
-
-} // namespace detail
-
-/// The result of the facing-pair kernel: the geometry, and whether it could not decide alone.
-struct FacingPairContact {
-    ContactGeometry geometry;
-    /// Zero or several of the 4 facing arc pairs admissible, or an overlap past 0.1 W: the
-    /// caller decides with ovalContactQuadrant (and the 16-pair reference when that asks).
-    bool undecided = false;
-};
-
-/// Oval-oval contact from the 4 facing arc pairs (as ovalContactQuadrant), for the common case
-/// that exactly one of them is admissible: then the minimum-overlap rule has nothing to compare
-/// and only that pair's distance is needed. Admissibility is decided on squares (no square
-/// root), so the kernel takes one square root and one division per pair, as the disk kernel,
-/// instead of four and one. Where it decides, its result has the bits of ovalContactQuadrant's
-/// (the same expressions for the chosen pair; tested). Several admissible pairs occur only at
-/// overlaps of several per cent of W (tested on random pairs), so handing those back costs
-/// nothing in a packing. Written without branches and with plain numbers (vectorised loop);
-/// arguments as for ovalContactQuadrant.
-inline FacingPairContact
-ovalContactFacingPair(double endOffsetA, double sideOffsetA, double endRadiusA, double sideRadiusA,
-                      double cosJunctionA, double sinJunctionA, double cA, double sA,
-                      double endOffsetB, double sideOffsetB, double endRadiusB, double sideRadiusB,
-                      double cosJunctionB, double sinJunctionB, double cB, double sB, double dx,
-                      double dy, double smallerWidth) {
-    // The facing arcs and their centres: exactly as ovalContactQuadrant.
-    const double towardB1 = cA * dx + sA * dy, towardB2 = -sA * dx + cA * dy;
-    const double towardA1 = -(cB * dx + sB * dy), towardA2 = -(-sB * dx + cB * dy);
-    const double endSignA = towardB1 >= 0 ? 1.0 : -1.0, sideSignA = towardB2 >= 0 ? 1.0 : -1.0;
-    const double endSignB = towardA1 >= 0 ? 1.0 : -1.0, sideSignB = towardA2 >= 0 ? 1.0 : -1.0;
-    const double eA = endSignA * endOffsetA, sdA = sideSignA * sideOffsetA;
-    const double eB = endSignB * endOffsetB, sdB = sideSignB * sideOffsetB;
-    const double endA1 = cA * eA, endA2 = sA * eA;
-    const double sideA1 = sA * sdA, sideA2 = -(cA * sdA);
-    const double endB1 = dx + cB * eB, endB2 = dy + sB * eB;
-    const double sideB1 = dx + sB * sdB, sideB2 = dy + -(cB * sdB);
-    const double tolerance = kArcDirectionTolerance;
-    const double endLimitA = cosJunctionA - tolerance, sideLimitA = sinJunctionA - tolerance;
-    const double endLimitB = cosJunctionB - tolerance, sideLimitB = sinJunctionB - tolerance;
-
-    const auto admissible = [&](double a1, double a2, bool endOfA, double b1, double b2,
-                                bool endOfB) {
-        const double w1 = b1 - a1, w2 = b2 - a2;
-        const double lengthSquared = w1 * w1 + w2 * w2;
-        const double alongA =
-            endOfA ? endSignA * (cA * w1 + sA * w2) : sideSignA * (-sA * w1 + cA * w2);
-        const double alongB =
-            endOfB ? endSignB * -(cB * w1 + sB * w2) : sideSignB * -(-sB * w1 + cB * w2);
-        return (lengthSquared > 0.0) &
-               detail::admitsBySquares(alongA, endOfA ? endLimitA : sideLimitA, lengthSquared) &
-               detail::admitsBySquares(alongB, endOfB ? endLimitB : sideLimitB, lengthSquared);
-    };
-    const bool endEnd = admissible(endA1, endA2, true, endB1, endB2, true);
-    const bool endSide = admissible(endA1, endA2, true, sideB1, sideB2, false);
-    const bool sideEnd = admissible(sideA1, sideA2, false, endB1, endB2, true);
-    const bool sideSide = admissible(sideA1, sideA2, false, sideB1, sideB2, false);
-    // Exactly one admissible, in bool logic (no int in the vectorised loop's arithmetic).
-    const bool none = !(endEnd | endSide | sideEnd | sideSide);
-    const bool several = (endEnd & (endSide | sideEnd | sideSide)) |
-                         (endSide & (sideEnd | sideSide)) | (sideEnd & sideSide);
-    // The one admissible pair (when there is exactly one; else any, to stay finite).
-    const bool endOfA = endEnd | endSide, endOfB = endEnd | sideEnd;
-    const double a1 = endOfA ? endA1 : sideA1, a2 = endOfA ? endA2 : sideA2;
-    const double b1 = endOfB ? endB1 : sideB1, b2 = endOfB ? endB2 : sideB2;
-    const double rA = endOfA ? endRadiusA : sideRadiusA, rB = endOfB ? endRadiusB : sideRadiusB;
-    const double w1 = b1 - a1, w2 = b2 - a2;
-    const double distance = std::sqrt(w1 * w1 + w2 * w2);
-    const double overlap = rA + rB - distance;
-    const double inv = 1.0 / std::max(distance, std::numeric_limits<double>::min());
-    const double u1 = w1 * inv, u2 = w2 * inv;
-    FacingPairContact out;
-    out.undecided = none | several | (overlap > 0.1 * smallerWidth);
-    out.geometry.overlap = overlap;
-    out.geometry.normalX = u1;
-    out.geometry.normalY = u2;
-    const double reach = rA - 0.5 * overlap;
-    out.geometry.pointX = a1 + reach * u1;
-    out.geometry.pointY = a2 + reach * u2;
-    return out;
-}
-
-/// The facing-pair kernel for two shapes' precomputed arcs.
-inline FacingPairContact ovalContactFacingPair(const OvalArcs& A, double cA, double sA,
-                                               const OvalArcs& B, double cB, double sB, double dx,
-                                               double dy) {
-    return ovalContactFacingPair(A.endOffset, A.sideOffset, A.endRadius, A.sideRadius,
-                                 A.cosJunction, A.sinJunction, cA, sA, B.endOffset, B.sideOffset,
-                                 B.endRadius, B.sideRadius, B.cosJunction, B.sinJunction, cB, sB,
-                                 dx, dy, std::min(A.width, B.width));
-}
-
-/// Oval-oval contact, fast form: the facing-pair kernel; where it cannot decide, the quadrant
-/// kernel (4 arc pairs, minimum overlap; the engine's vector pair loop calls it directly, with the
-/// same bits); where that asks, the 16-pair reference. Agrees with ovalContactAllPairs (tested on random pairs with large
-/// overlaps). (cA, sA), (cB, sB): cos and sin of the orientations.
+/// Oval-oval contact as the engine's pair loop decides it: the quadrant kernel (4 arc pairs,
+/// minimum overlap; the vector loop calls it directly, with the same bits), and where it asks,
+/// the 16-pair reference (the loop's deferred pairs). Agrees with ovalContactAllPairs (tested on
+/// random pairs with large overlaps). (cA, sA), (cB, sB): cos and sin of the orientations.
 inline ContactGeometry ovalContact(const OvalShape& A, double cA, double sA, const OvalShape& B,
                                    double cB, double sB, double dx, double dy) {
     const OvalArcs a = ovalArcs(A), b = ovalArcs(B);
-    const FacingPairContact f = ovalContactFacingPair(a, cA, sA, b, cB, sB, dx, dy);
-    if (!f.undecided) {
-        return f.geometry;
-    }
     const QuadrantContact q = ovalContactQuadrant(a, cA, sA, b, cB, sB, dx, dy);
     return q.needsReference ? ovalContactAllPairs(A, cA, sA, B, cB, sB, dx, dy) : q.geometry;
 }

@@ -6,7 +6,7 @@
 // is the separating-axis definition itself (the penetration depth of two convex bodies is the
 // smallest, over directions d, of h_A(d) + h_B(-d) - d . (x_B - x_A), h the support function),
 // minimised numerically over d; the engine's overlap is read from a two-grain Simulation, so
-// the map measures the production path (facing-pair kernel, quadrant kernel, 16-pair fallback).
+// the map measures the production path (quadrant kernel, 16-pair fallback).
 // The 16-pair reference, and the engine without the overlap threshold past which it hands a
 // pair to the 16 (0.1 W), are measured beside it. Pure functions
 // and plain data, any thread; the map runs in one process.
