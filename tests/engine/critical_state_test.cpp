@@ -1,6 +1,7 @@
 // Steady-state criterion on synthetic series, the critical stress ratio summary, and the
 // critical state line fit against exact lines and a hand least-squares computation.
 #include "grainlab/critical_state.h"
+#include "grainlab/statistics.h"
 
 #include <cmath>
 #include <random>
@@ -96,11 +97,12 @@ TEST(SteadyState, ExtensionAndShortTests) {
 }
 
 TEST(CriticalState, StressRatioMeanAndSampleScatter) {
-    const StressRatioSummary s = stressRatioSummary({0.5, 0.6, 0.7});
+    // M over the steady tests is the seed statistics' scatterOf (statistics.h).
+    const Scatter s = scatterOf(std::vector<double>{0.5, 0.6, 0.7});
     EXPECT_NEAR(s.mean, 0.6, 1e-15);
-    EXPECT_NEAR(s.scatter, 0.1, 1e-15); // sqrt((0.01 + 0 + 0.01) / 2)
-    EXPECT_EQ(s.tests, 3u);
-    EXPECT_EQ(stressRatioSummary({0.55}).scatter, 0.0);
+    EXPECT_NEAR(s.sd, 0.1, 1e-15); // sqrt((0.01 + 0 + 0.01) / 2)
+    EXPECT_EQ(s.count, 3);
+    EXPECT_EQ(scatterOf(std::vector<double>{0.55}).sd, 0.0);
 }
 
 TEST(CriticalState, ExactLineIsRecovered) {

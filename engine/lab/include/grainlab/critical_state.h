@@ -2,7 +2,8 @@
 // The critical state from finished tests: whether a test's end is steady (q and the volume no
 // longer changing with eps1), the critical stress ratio M = q/p over the steady tests, and the
 // critical state line e = e_Gamma - lambda ln p' in the e - ln p' plane. Pure functions of
-// recorded series, used by the CLI, the report, the window and studies on their own threads.
+// recorded series, used by the CLI, the report, the window and studies on their own threads; the
+// least squares are the report's fitLine() (report_data.h).
 
 #include <cstddef>
 #include <string>
@@ -37,17 +38,7 @@ SteadyStateResult steadyState(const std::vector<double>& eps1, const std::vector
                               const std::vector<double>& p, const std::vector<double>& epsV,
                               const SteadyStateCriterion& criterion = {});
 
-/// Least-squares slope dy/dx of the points (x, y).
-double leastSquaresSlope(const std::vector<double>& x, const std::vector<double>& y);
-
-struct StressRatioSummary {
-    double mean = 0;    ///< mean M [-]
-    double scatter = 0; ///< sample standard deviation over the tests (0 for one test) [-]
-    std::size_t tests = 0;
-};
-
-/// M = q/p at the end of each steady test: `ratios` holds one q/p per test.
-StressRatioSummary stressRatioSummary(const std::vector<double>& ratios);
+// M with its scatter is scatterOf() (statistics.h) of the end q/p of the steady tests.
 
 /// e = eGamma - lambda ln(p / 1 Pa), fitted by least squares in (ln p, e).
 struct CriticalStateLine {

@@ -2,28 +2,24 @@
 #include "grainlab/critical_state.h"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "grainlab/report_data.h"
+
 namespace grainlab {
 
-double leastSquaresSlope(const std::vector<double>& x, const std::vector<double>& y) {
-    const std::size_t n = x.size();
-    double mx = 0, my = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        mx += x[i];
-        my += y[i];
-    }
-    mx /= double(n);
-    my /= double(n);
-    double sxy = 0, sxx = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        sxy += (x[i] - mx) * (y[i] - my);
-        sxx += (x[i] - mx) * (x[i] - mx);
-    }
-    return sxx > 0.0 ? sxy / sxx : 0.0;
+namespace {
+
+/// Least-squares slope dy/dx of the points (x, y); 0 when every x is the same.
+double slopeOf(const std::vector<double>& x, const std::vector<double>& y) {
+    const std::optional<LinearFit> fit = fitLine(x, y);
+    return fit ? fit->slope : 0.0;
 }
+
+} // namespace
 
 SteadyStateResult steadyState(const std::vector<double>& eps1, const std::vector<double>& q,
                               const std::vector<double>& p, const std::vector<double>& epsV,
@@ -55,8 +51,8 @@ SteadyStateResult steadyState(const std::vector<double>& eps1, const std::vector
         meanP += p[i];
     }
     meanP /= double(r.samples);
-    r.stressSlope = leastSquaresSlope(e, qw) / meanP;
-    r.volumeSlope = leastSquaresSlope(e, vw);
+    r.stressSlope = slopeOf(e, qw) / meanP;
+    r.volumeSlope = slopeOf(e, vw);
     if (!(std::fabs(r.stressSlope) < criterion.maxStressSlope)) {
         r.reason = fmt::format("|dq/deps1| / p = {:.3g} over the last window, above {}",
                                std::fabs(r.stressSlope), criterion.maxStressSlope);
@@ -67,26 +63,6 @@ SteadyStateResult steadyState(const std::vector<double>& eps1, const std::vector
         r.steady = true;
     }
     return r;
-}
-
-StressRatioSummary stressRatioSummary(const std::vector<double>& ratios) {
-    StressRatioSummary s;
-    s.tests = ratios.size();
-    if (ratios.empty()) {
-        return s;
-    }
-    for (double m : ratios) {
-        s.mean += m;
-    }
-    s.mean /= double(ratios.size());
-    if (ratios.size() > 1) {
-        double ss = 0;
-        for (double m : ratios) {
-            ss += (m - s.mean) * (m - s.mean);
-        }
-        s.scatter = std::sqrt(ss / double(ratios.size() - 1));
-    }
-    return s;
 }
 
 double CriticalStateLine::voidRatioAt(double p) const {
@@ -109,34 +85,15 @@ CriticalStateLine fitCriticalStateLine(const std::vector<double>& p, const std::
         }
         x[i] = std::log(p[i]);
     }
-    const std::size_t n = x.size();
-    double mx = 0, my = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        mx += x[i];
-        my += e[i];
-    }
-    mx /= double(n);
-    my /= double(n);
-    double sxx = 0, sxy = 0, syy = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        sxx += (x[i] - mx) * (x[i] - mx);
-        sxy += (x[i] - mx) * (e[i] - my);
-        syy += (e[i] - my) * (e[i] - my);
-    }
-    if (!(sxx > 0.0)) {
+    const std::optional<LinearFit> fit = fitLine(x, e);
+    if (!fit) {
         throw std::invalid_argument("critical state line: all p' are equal");
     }
     CriticalStateLine line;
-    line.points = n;
-    const double slope = sxy / sxx;
-    line.lambda = -slope;
-    line.eGamma = my - slope * mx;
-    double ssRes = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double r = e[i] - (line.eGamma + slope * x[i]);
-        ssRes += r * r;
-    }
-    line.rSquared = syy > 0.0 ? 1.0 - ssRes / syy : 1.0;
+    line.points = fit->count;
+    line.lambda = -fit->slope;
+    line.eGamma = fit->intercept;
+    line.rSquared = fit->r2;
     return line;
 }
 
