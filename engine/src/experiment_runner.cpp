@@ -119,25 +119,9 @@ ExperimentRunner::ExperimentRunner(ExperimentConfig config, ResumePoint resume, 
     // A finished run's stage is the plan's last, which its final checkpoint ended.
     impl_->position = ctx.done ? impl_->plan.size() - 1 : planPosition(impl_->plan, kind, s.index);
     ctx.stage = makeStage(impl_->plan[impl_->position]);
-    ctx.carried = s;
+    ctx.restore(s);
     ctx.stage->restore(s, ctx, resume.state, std::move(resume.runningPeak));
     ctx.sim = std::make_unique<Simulation>(std::move(resume.state));
-
-    ctx.stageDone = s.stageDone;
-    ctx.stageStartStep = s.stageStartStep;
-    ctx.length1At0 = s.length1At0;
-    ctx.length2At0 = s.length2At0;
-    ctx.areaAt0 = s.areaAt0;
-    ctx.haveLast = s.haveLast;
-    ctx.lastEps1 = s.lastEps1;
-    ctx.lastEpsv = s.lastEpsv;
-    ctx.nextRecordStep = s.nextRecordStep;
-    ctx.nextSnapshotStep = s.nextSnapshotStep;
-    ctx.checkpointCounter = s.checkpointCounter;
-    ctx.thetaAtTestStart = std::make_shared<const std::vector<double>>(s.thetaAtTestStart);
-    ctx.thetaAtRunStart = std::make_shared<const std::vector<double>>(s.thetaAtRunStart);
-    ctx.currentSeries = s.currentSeries.empty() ? -1 : ctx.seriesIndex(s.currentSeries);
-    ctx.warnings = s.warnings;
     if (output) {
         output->warnings(ctx.warnings); // the file holds what its checkpoint held
     }

@@ -69,7 +69,7 @@ void RunContext::setStrainReference() {
     haveLast = false;
 }
 
-std::int64_t RunContext::strideOf(double strain) const {
+std::int64_t strideOf(const ExperimentConfig& config, double strain) {
     return std::max<std::int64_t>(1, std::llround(strain / config.shear.axialStrainPerStep));
 }
 
@@ -181,6 +181,25 @@ RunnerState RunContext::runnerState() const {
     s.warnings = warnings;
     stage->save(s, *this);
     return s;
+}
+
+void RunContext::restore(const RunnerState& s) {
+    carried = s;
+    stageDone = s.stageDone;
+    stageStartStep = s.stageStartStep;
+    length1At0 = s.length1At0;
+    length2At0 = s.length2At0;
+    areaAt0 = s.areaAt0;
+    haveLast = s.haveLast;
+    lastEps1 = s.lastEps1;
+    lastEpsv = s.lastEpsv;
+    nextRecordStep = s.nextRecordStep;
+    nextSnapshotStep = s.nextSnapshotStep;
+    checkpointCounter = s.checkpointCounter;
+    thetaAtTestStart = std::make_shared<const std::vector<double>>(s.thetaAtTestStart);
+    thetaAtRunStart = std::make_shared<const std::vector<double>>(s.thetaAtRunStart);
+    currentSeries = s.currentSeries.empty() ? -1 : seriesIndex(s.currentSeries);
+    warnings = s.warnings;
 }
 
 } // namespace grainlab

@@ -29,6 +29,8 @@ inline constexpr const char* kCompactionSeries = "compaction";
 
 /// Threads a run of `config` uses (experiment_runner.h, engineThreads).
 int threadsFor(const ExperimentConfig& config);
+/// Steps of the shear test for an axial strain (at least one).
+std::int64_t strideOf(const ExperimentConfig& config, double strain);
 
 struct RunContext {
     ExperimentConfig config;
@@ -67,7 +69,7 @@ struct RunContext {
     double eps2() const { return (length2At0 - sim->cell()[3]) / length2At0; }
     double epsv() const { return (areaAt0 - sim->cellArea()) / areaAt0; }
     /// Steps of the shear test for an axial strain (at least one).
-    std::int64_t strideOf(double strain) const;
+    std::int64_t strideOf(double strain) const { return grainlab::strideOf(config, strain); }
 
     /// Appends a row of measures now to the current series.
     void recordNow();
@@ -80,7 +82,11 @@ struct RunContext {
     void checkpoint(const std::string& label, const StageIdentity& id);
     /// The next checkpoint's name, counting it.
     std::string nextCheckpointName(const std::string& label);
+    /// The runner state of now, for a checkpoint (the current stage adds its own fields).
     RunnerState runnerState() const;
+    /// Takes back what runnerState() wrote of the run (series must hold the resumed series);
+    /// the stage's own fields are the stage's to restore.
+    void restore(const RunnerState& state);
 };
 
 } // namespace grainlab

@@ -180,9 +180,7 @@ void DrainedShearStage::restore(const RunnerState& state, const RunContext& ctx,
 }
 
 StageShare DrainedShearStage::share(const ExperimentConfig& config) const {
-    const double steps = double(std::max<std::int64_t>(
-        1, std::llround(config.shear.targetAxialStrain / config.shear.axialStrainPerStep)));
-    return {steps, false};
+    return {double(strideOf(config, config.shear.targetAxialStrain)), false};
 }
 
 } // namespace grainlab
