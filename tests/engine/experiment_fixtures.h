@@ -1,5 +1,9 @@
 #pragma once
-// Experiment-file fixtures for the reader's tests.
+// Experiment-file fixtures for the reader's and the runner's tests.
+
+#include <fstream>
+#include <sstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +20,25 @@ inline nlohmann::json minimalExperiment() {
         "compaction": {"pressures": [15e3, 25e3]},
         "shear": {"target_axial_strain": 0.1}
     })");
+}
+
+/// The quick preset (resources/experiments/quick.json) as shipped.
+inline nlohmann::json quickExperiment() {
+    std::ifstream in(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json");
+    std::stringstream text;
+    text << in.rdbuf();
+    return nlohmann::json::parse(text.str());
+}
+
+/// The quick experiment made small: 120 grains, two pressures, a short shear.
+inline nlohmann::json smallQuickExperiment() {
+    nlohmann::json j = quickExperiment();
+    j["grains"]["count"] = 120;
+    j["compaction"]["pressures"] = {25e3, 50e3};
+    j["shear"]["pressures"] = {25e3, 50e3};
+    j["shear"]["target_axial_strain"] = 0.002;
+    j["shear"]["max_strain_rate"] = 20.0;
+    return j;
 }
 
 } // namespace grainlab::test

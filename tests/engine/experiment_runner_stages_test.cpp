@@ -17,6 +17,7 @@
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/stage_kind.h"
+#include "experiment_fixtures.h"
 #include "runner_state.h"
 
 namespace grainlab {
@@ -24,15 +25,7 @@ namespace {
 
 /// The quick experiment made small: 120 grains, two pressures, a short shear.
 ExperimentConfig smallQuick() {
-    std::ifstream in(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json");
-    std::stringstream text;
-    text << in.rdbuf();
-    nlohmann::json j = nlohmann::json::parse(text.str());
-    j["grains"]["count"] = 120;
-    j["compaction"]["pressures"] = {25e3, 50e3};
-    j["shear"]["pressures"] = {25e3, 50e3};
-    j["shear"]["target_axial_strain"] = 0.002;
-    j["shear"]["max_strain_rate"] = 20.0;
+    nlohmann::json j = test::smallQuickExperiment();
     j["record"]["snapshot_strain_interval"] = 0.0005;
     return parseExperimentText(j.dump(), "small-quick.json");
 }

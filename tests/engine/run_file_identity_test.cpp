@@ -16,6 +16,7 @@
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/run_file.h"
+#include "experiment_fixtures.h"
 
 namespace grainlab {
 namespace {
@@ -23,10 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(RunFileIdentity, CheckpointsAndRowsCarryTheirStage) {
-    std::ifstream in(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json");
-    std::stringstream text;
-    text << in.rdbuf();
-    nlohmann::json j = nlohmann::json::parse(text.str());
+    nlohmann::json j = test::quickExperiment();
     j["grains"]["count"] = 120;
     j["compaction"]["pressures"] = {25e3, 50e3};
     j["shear"]["pressures"] = {25e3, 50e3};

@@ -22,25 +22,12 @@
 #include "grainlab/run_file.h"
 #include "grainlab/study_plan.h"
 #include "grainlab/time_step.h"
+#include "experiment_fixtures.h"
 
 namespace grainlab {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// The quick experiment made small: 120 grains, two pressures, a short shear.
-nlohmann::json smallQuick() {
-    std::ifstream in(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json");
-    std::stringstream text;
-    text << in.rdbuf();
-    nlohmann::json j = nlohmann::json::parse(text.str());
-    j["grains"]["count"] = 120;
-    j["compaction"]["pressures"] = {25e3, 50e3};
-    j["shear"]["pressures"] = {25e3, 50e3};
-    j["shear"]["target_axial_strain"] = 0.002;
-    j["shear"]["max_strain_rate"] = 20.0;
-    return j;
-}
 
 std::vector<RunWarning> runToTheEnd(const ExperimentConfig& config, const std::string& path) {
     RunFile file(path, config.sourceText);
@@ -58,7 +45,7 @@ fs::path scratchFolder(const char* name) {
 }
 
 TEST(RunWarnings, AShearAboveTheQuasiStaticLimitIsWarnedAboutOnceInTheRunFileToo) {
-    nlohmann::json j = smallQuick();
+    nlohmann::json j = test::smallQuickExperiment();
     const ExperimentConfig probe = parseExperimentText(j.dump(), "probe.json");
     // I falls as 1/sqrt(p): 1.2 times the limit at 25 kPa is 0.85 times it at 50 kPa.
     const double perStep = 1.2 * kQuasiStaticInertialNumber / shearInertialNumber(probe, 25e3) *
@@ -101,8 +88,8 @@ TEST(RunWarnings, AShearAboveTheQuasiStaticLimitIsWarnedAboutOnceInTheRunFileToo
 // One inertial number: the series column, the warning and the study's knob, on a test at the
 // start of its shear (mean stress = confining pressure, axial rate = strain per step / step).
 TEST(RunWarnings, ColumnWarningAndKnobShareOneInertialNumber) {
-    const std::string base = smallQuick().dump();
-    const double pressure = 25e3; // the lowest shear pressure of smallQuick()
+    const std::string base = test::smallQuickExperiment().dump();
+    const double pressure = 25e3; // the lowest shear pressure of test::smallQuickExperiment()
     for (const double level :
          {0.5 * kQuasiStaticInertialNumber, 2.0 * kQuasiStaticInertialNumber}) {
         KnobLevel knob;
@@ -148,7 +135,7 @@ TEST(RunWarnings, TheQuickPresetIsQuasiStatic) {
 }
 
 TEST(RunWarnings, ATimeStepNearTheLimitIsWarnedAboutAtTheStart) {
-    nlohmann::json j = smallQuick();
+    nlohmann::json j = test::smallQuickExperiment();
     const ExperimentConfig probe = parseExperimentText(j.dump(), "probe.json");
     const double limit = criticalTimeStep(assemblyShapes(probe.assembly), probe.parameters).limit;
     // Within 20 % of the limit, keeping the loading rate per second.
@@ -185,7 +172,7 @@ std::string stageFailure(const ExperimentConfig& config) {
 }
 
 TEST(RunWarnings, AStageWithNothingToDissipateSaysSo) {
-    nlohmann::json j = smallQuick();
+    nlohmann::json j = test::smallQuickExperiment();
     j["damping"] = {{"kind", "none"}};
     j["compaction"]["criterion"]["max_steps"] = 20000;
     const std::string error = stageFailure(parseExperimentText(j.dump(), "undamped.json"));
@@ -199,7 +186,7 @@ TEST(RunWarnings, AStageThatJittersPastTheStableStepNamesTheTimeStep) {
     // The guard loosened (one contact assumed on the stiffest grain instead of six), a step
     // twice the usual estimate: above every limit the maps measured for these ovals, so the
     // compacted packing jitters and its I_uf keeps a floor instead of calming.
-    nlohmann::json j = smallQuick();
+    nlohmann::json j = test::smallQuickExperiment();
     j["compaction"]["pressures"] = {25e3};
     j["shear"]["pressures"] = {25e3};
     const ExperimentConfig usual = parseExperimentText(j.dump(), "usual.json");
@@ -219,7 +206,7 @@ TEST(RunWarnings, AStageThatJittersPastTheStableStepNamesTheTimeStep) {
 }
 
 TEST(RunWarnings, AStageCutShortWhileCalmingAdvisesMoreSteps) {
-    nlohmann::json j = smallQuick();
+    nlohmann::json j = test::smallQuickExperiment();
     // The loose grid's compaction at 25 kPa jams after some 35 000 steps and calms by about
     // 65 000: cut at 20 000 it is still gathering, cut at 45 000 its I_uf is still falling.
     j["compaction"]["pressures"] = {25e3};
