@@ -12,19 +12,9 @@ grainlab="$1"
 docs="$2"
 experiment="$3"
 
-python=""
-for candidate in /usr/bin/python3 "$(command -v python3 || true)"; do
-  if [[ -n "$candidate" && -x "$candidate" ]] &&
-    "$candidate" -c 'import h5py, numpy, pandas, matplotlib' > /dev/null 2>&1; then
-    python="$candidate"
-    break
-  fi
-done
-if [[ -z "$python" ]]; then
-  echo "SKIPPED: no python3 with h5py, numpy, pandas and matplotlib (Debian: python3-h5py" \
-    "python3-numpy python3-pandas python3-matplotlib)"
-  exit 77
-fi
+# shellcheck source=find_python.sh
+source "$(dirname "${BASH_SOURCE[0]}")/find_python.sh"
+find_python h5py numpy pandas matplotlib
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
