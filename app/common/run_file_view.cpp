@@ -9,11 +9,10 @@
 #include <map>
 #include <stdexcept>
 
-#include <fmt/format.h>
-
 #include "grainlab/measures.h"
 #include "grainlab/run_file.h"
 #include "grainlab/simulation.h"
+#include "grainlab/stage_kind.h"
 
 namespace grainlab::ui {
 namespace {
@@ -23,8 +22,7 @@ std::string stageName(const CheckpointInfo& info) {
     if (info.stageKind.empty()) {
         return info.name; // not recorded (cannot happen in a file of this format)
     }
-    return fmt::format("{} {:g} kPa{}", info.stageKind, info.pressure / 1000.0,
-                       info.peak ? ", peak of q/p" : "");
+    return stageTitle(info.stageKind, info.pressure) + (info.peak ? ", peak of q/p" : "");
 }
 
 /// The checkpoints in write order, except that a test's peak checkpoint (written when the test

@@ -23,10 +23,6 @@ std::vector<SeriesColumn> numericColumns() {
     return out;
 }
 
-std::string kiloPascal(double pressure) {
-    return fmt::format("{:g} kPa", pressure / 1000.0);
-}
-
 } // namespace
 
 /// Small assemblies run on one thread, where the per-step cost of waking a second thread
@@ -106,7 +102,7 @@ void RunContext::recordNow() {
 
 std::string RunContext::stageName() const {
     return done ? std::string("done")
-                : stageKindName(stage->kind()) + " " + kiloPascal(stage->pressure());
+                : stageTitle(stageKindName(stage->kind()), stage->pressure());
 }
 
 StageIdentity RunContext::identity() const {

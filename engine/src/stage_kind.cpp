@@ -3,6 +3,8 @@
 #include <array>
 #include <utility>
 
+#include <fmt/format.h>
+
 namespace grainlab {
 namespace {
 
@@ -31,6 +33,10 @@ std::optional<StageKind> stageKindFromName(const std::string& name) {
         }
     }
     return std::nullopt;
+}
+
+std::string stageTitle(const std::string& kindName, double pressure) {
+    return fmt::format("{} {:g} kPa", kindName, pressure / 1000.0);
 }
 
 } // namespace grainlab

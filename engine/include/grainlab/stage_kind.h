@@ -21,5 +21,8 @@ enum class StageKind {
 std::string stageKindName(StageKind kind);
 /// The kind of a name stageKindName() gives; nullopt for any other text.
 std::optional<StageKind> stageKindFromName(const std::string& name);
+/// A stage as the window, the progress bar and the series' stage column name it: its kind's
+/// name and its pressure, "shear 15 kPa".
+std::string stageTitle(const std::string& kindName, double pressure);
 
 } // namespace grainlab
