@@ -73,6 +73,17 @@ Result runGrainlab(const std::string& arguments) {
 }
 
 /// Every file under `folder` with its bytes.
+/// `grainlab run` of `experiment` into `out`, stopped by SIGINT after `steps` steps (the
+/// GRAINLAB_TEST_STOP_AFTER_STEPS hook): true when it ended as an interrupted run does (130).
+bool interruptedRun(const fs::path& experiment, const fs::path& out, int steps) {
+    const std::string command = fmt::format(
+        "GRAINLAB_TEST_STOP_AFTER_STEPS={} GRAINLAB_TEST_STOP_SIGNAL=INT {} run {} --out {} "
+        "--quiet > /dev/null 2>&1",
+        steps, GRAINLAB_EXE, experiment.string(), out.string());
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) && WEXITSTATUS(status) == 130;
+}
+
 std::map<std::string, std::string> folderBytes(const fs::path& folder) {
     std::map<std::string, std::string> out;
     for (const auto& e : fs::recursive_directory_iterator(folder)) {
@@ -175,14 +186,7 @@ TEST(RunFolder, OutOfAnExistingRunIsRefusedWithoutForce) {
     const fs::path experiment = writeTinyExperiment(base);
     const fs::path out = base / "out";
     // An interrupted, resumable run.
-    {
-        const std::string command = fmt::format(
-            "GRAINLAB_TEST_STOP_AFTER_STEPS=3000 GRAINLAB_TEST_STOP_SIGNAL=INT {} run {} --out {} "
-            "--quiet > /dev/null 2>&1",
-            GRAINLAB_EXE, experiment.string(), out.string());
-        const int status = std::system(command.c_str());
-        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130);
-    }
+    ASSERT_TRUE(interruptedRun(experiment, out, 3000));
     const auto before = folderBytes(out);
     const Result r =
         runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()));
@@ -245,14 +249,7 @@ TEST(RunFolder, ADamagedRunFileIsRefusedByNameOrResumesToTheSameResult) {
             .status,
         0);
     const fs::path stopped = base / "stopped";
-    {
-        const std::string command = fmt::format(
-            "GRAINLAB_TEST_STOP_AFTER_STEPS=9000 GRAINLAB_TEST_STOP_SIGNAL=INT {} run {} --out {} "
-            "--quiet > /dev/null 2>&1",
-            GRAINLAB_EXE, experiment.string(), stopped.string());
-        const int status = std::system(command.c_str());
-        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130);
-    }
+    ASSERT_TRUE(interruptedRun(experiment, stopped, 9000));
     const std::string bytes = readText(stopped / "run.h5");
     const auto expected = folderBytes(whole);
     int refused = 0, resumed = 0;
@@ -333,14 +330,7 @@ TEST(RunFolder, AResumedRunEndsWithAFileOtherReadersOpenOrIsRefusedNamingTheDama
     const fs::path base = freshFolder("damaged-whole");
     const fs::path experiment = writeTinyExperiment(base);
     const fs::path stopped = base / "stopped";
-    {
-        const std::string command = fmt::format(
-            "GRAINLAB_TEST_STOP_AFTER_STEPS=9000 GRAINLAB_TEST_STOP_SIGNAL=INT {} run {} --out {} "
-            "--quiet > /dev/null 2>&1",
-            GRAINLAB_EXE, experiment.string(), stopped.string());
-        const int status = std::system(command.c_str());
-        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130);
-    }
+    ASSERT_TRUE(interruptedRun(experiment, stopped, 9000));
     const std::string bytes = readText(stopped / "run.h5");
     ASSERT_EQ(otherReadersRefuse(stopped / "run.h5", python), "");
     // Damage where a resume does not read: 4 KB of zeros at byte 6937 (the hostile tester's
