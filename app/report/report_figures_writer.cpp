@@ -1,8 +1,10 @@
 #include "report/report_figures_writer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include <QDir>
 #include <QGuiApplication>
@@ -26,6 +28,15 @@ namespace {
 
 QString q(const std::string& s) { return QString::fromStdString(s); }
 
+/// A copy of `v` with every value times `scale`.
+std::vector<double> scaled(std::vector<double> v, double scale) {
+    for (double& x : v) {
+        x *= scale;
+    }
+    return v;
+}
+
+/// The figure drawn in its axes' units (ReportFigure::xScale, yScale: ε1 in percent, q in kPa).
 ui::PlotPainter plotOf(const ReportFigure& f) {
     ui::PlotPainter plot;
     plot.title = q(f.title);
@@ -39,19 +50,19 @@ ui::PlotPainter plotOf(const ReportFigure& f) {
         if (line.points) {
             for (std::size_t k = 0; k < line.x.size(); ++k) {
                 ui::PlotPoint p;
-                p.x = line.x[k];
-                p.y = line.y[k];
-                p.yError = line.sd[k];
-                p.label = QString::number(line.x[k], 'g', 3);
+                p.x = line.x[k] * f.xScale;
+                p.y = line.y[k] * f.yScale;
+                p.yError = line.sd[k] * f.yScale;
+                p.label = QString::number(p.x, 'g', 3);
                 p.colour = c;
                 plot.points.push_back(p);
             }
             continue;
         }
         ui::PlotCurve curve;
-        curve.x = line.x;
-        curve.y = line.y;
-        curve.band = line.sd;
+        curve.x = scaled(line.x, f.xScale);
+        curve.y = scaled(line.y, f.yScale);
+        curve.band = scaled(line.sd, f.yScale);
         curve.label = q(line.label);
         curve.colour = c;
         plot.curves.push_back(std::move(curve));
@@ -63,8 +74,9 @@ ui::PlotPainter plotOf(const ReportFigure& f) {
     }
     if (f.fit && any) {
         ui::PlotCurve fit;
-        fit.x = {lo, hi};
-        fit.y = {f.fit->slope * lo + f.fit->intercept, f.fit->slope * hi + f.fit->intercept};
+        fit.x = {lo * f.xScale, hi * f.xScale};
+        fit.y = {(f.fit->slope * lo + f.fit->intercept) * f.yScale,
+                 (f.fit->slope * hi + f.fit->intercept) * f.yScale};
         fit.label = q(fitEquation(*f.fit));
         fit.colour = QColor(30, 30, 30);
         fit.width = 2.0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -301,6 +302,46 @@ const std::vector<SeriesColumn>& seriesColumns() {
 std::string seriesHeader(const SeriesColumn& column) {
     // The text column `stage` has no unit: its header is the bare name.
     return column.text ? column.name : column.name + " [" + column.unit + "]";
+}
+
+AxisLabel axisLabelOf(const std::string& column) {
+    static const std::vector<std::pair<std::string, AxisLabel>> labels = {
+        {"time", {"t [s]", 1.0}},
+        {"eps1", {"ε1 [%]", 100.0}},
+        {"eps2", {"ε2 [%]", 100.0}},
+        {"epsv", {"εv [%]", 100.0}},
+        {"DI", {"−dεv/dε1", 1.0}},
+        {"sigma11", {"σ11 [kPa]", 1e-3}},
+        {"sigma22", {"σ22 [kPa]", 1e-3}},
+        {"sigma12", {"σ12 [kPa]", 1e-3}},
+        {"p", {"p [kPa]", 1e-3}},
+        {"q", {"q [kPa]", 1e-3}},
+        {"q_over_p", {"q/p", 1.0}},
+        {"phi_deg", {"φ [°]", 1.0}},
+        {"Z_eff", {"Z̄", 1.0}},
+        {"Z_m", {"Z_m", 1.0}},
+        {"Nv", {"N_v", 1.0}},
+        {"Nv_over_Nvi", {"N_v/N_vi", 1.0}},
+        {"valence_mean", {"mean valence", 1.0}},
+        {"Hdev", {"H11 − H22", 1.0}},
+        {"Hsdev", {"H11 − H22, strong contacts", 1.0}},
+        {"Hwdev", {"H11 − H22, weak contacts", 1.0}},
+        {"Hratio", {"(H11 − H22)/(H11 + H22)", 1.0}},
+        {"Hsratio", {"(H11 − H22)/(H11 + H22), strong contacts", 1.0}},
+        {"Hwratio", {"(H11 − H22)/(H11 + H22), weak contacts", 1.0}},
+        {"inertial_number", {"I", 1.0}},
+    };
+    for (const auto& [name, label] : labels) {
+        if (name == column) {
+            return label;
+        }
+    }
+    for (const SeriesColumn& c : seriesColumns()) {
+        if (c.name == column && !c.text) {
+            return {c.unit == "-" ? c.name : c.name + " [" + c.unit + "]", 1.0};
+        }
+    }
+    return {column, 1.0};
 }
 
 std::vector<double> seriesRow(const MeasureSet& m, const RecordInputs& in) {

@@ -248,6 +248,32 @@ TEST(Measures, SeriesColumnsFollowTheSpec) {
     EXPECT_EQ(seriesHeader(columns[48]), "W_damping [J]");
 }
 
+TEST(Measures, FiguresLabelColumnsAsAPaperWould) {
+    // Strains in percent, stresses in kPa, ratios bare; the factor turns stored into drawn values.
+    EXPECT_EQ(axisLabelOf("eps1").text, "ε1 [%]");
+    EXPECT_EQ(axisLabelOf("eps1").scale, 100.0);
+    EXPECT_EQ(axisLabelOf("epsv").text, "εv [%]");
+    EXPECT_EQ(axisLabelOf("epsv").scale, 100.0);
+    EXPECT_EQ(axisLabelOf("q").text, "q [kPa]");
+    EXPECT_EQ(axisLabelOf("q").scale, 1e-3);
+    EXPECT_EQ(axisLabelOf("q_over_p").text, "q/p");
+    EXPECT_EQ(axisLabelOf("Z_eff").text, "Z̄");
+    EXPECT_EQ(axisLabelOf("I_uf").text, "I_uf [%]"); // already stored in percent
+    EXPECT_EQ(axisLabelOf("I_uf").scale, 1.0);
+    EXPECT_EQ(axisLabelOf("E_kin").text, "E_kin [J]");
+    EXPECT_EQ(axisLabelOf("not_a_column").text, "not_a_column");
+    // No label of a numeric column keeps the CSV's "[-]" or an underscore-joined ratio name.
+    for (const SeriesColumn& c : seriesColumns()) {
+        if (c.text) {
+            continue;
+        }
+        const AxisLabel label = axisLabelOf(c.name);
+        EXPECT_EQ(label.text.find("[-]"), std::string::npos) << c.name;
+        EXPECT_EQ(label.text.find("_over_"), std::string::npos) << c.name;
+        EXPECT_GT(label.scale, 0.0) << c.name;
+    }
+}
+
 TEST(Measures, SeriesRowPutsEachValueUnderItsColumn) {
     MeasureSet m;
     m.counts.grains = 100;

@@ -107,6 +107,26 @@ TEST(ReportFigures, CurvesAreTheMeanOverRunsWithTheirStandardDeviation) {
     EXPECT_DOUBLE_EQ(low.x.back(), 0.12);
 }
 
+TEST(ReportFigures, AxesAreLabelledAsAPaperWouldWithTheDataInStoredUnits) {
+    const auto figures = reportFigures(twoRuns());
+    const ReportFigure& qp = figure(figures, "01_q_over_p");
+    EXPECT_EQ(qp.xLabel, "ε1 [%]");
+    EXPECT_EQ(qp.xScale, 100.0);
+    EXPECT_EQ(qp.yLabel, "q/p");
+    EXPECT_EQ(qp.yScale, 1.0);
+    EXPECT_DOUBLE_EQ(qp.lines[0].x.back(), 0.12); // the lines keep the stored strain
+    EXPECT_EQ(figure(figures, "03_epsv").yLabel, "εv [%]");
+    EXPECT_EQ(figure(figures, "03_epsv").yScale, 100.0);
+    EXPECT_EQ(figure(figures, "01_q").yLabel, "q [kPa]");
+    EXPECT_EQ(figure(figures, "01_q").yScale, 1e-3);
+    for (const ReportFigure& f : figures) {
+        EXPECT_EQ(f.xLabel.find("[-]"), std::string::npos) << f.name << ": " << f.xLabel;
+        EXPECT_EQ(f.yLabel.find("[-]"), std::string::npos) << f.name << ": " << f.yLabel;
+        EXPECT_EQ(f.xLabel.find("_over_"), std::string::npos) << f.name << ": " << f.xLabel;
+        EXPECT_EQ(f.yLabel.find("_over_"), std::string::npos) << f.name << ": " << f.yLabel;
+    }
+}
+
 TEST(ReportFigures, SmoothedDilatancyOfALinearVolumeChangeIsItsSlope) {
     ReportOptions options;
     options.dilatancyWindow = 0.01;

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "grainlab/measures.h"
+#include "grainlab/ui/colour_maps.h"
 #include "grainlab/ui/scene_renderer.h"
 #include "overlay_points.h"
 #include "test_scenes.h"
@@ -40,8 +41,20 @@ SceneRenderer plainRenderer(QSize size) {
     r.setSnapshot(scene());
     r.options().caption = false;
     r.options().scaleBar = false;
+    r.options().colourKey = false;
     r.fitToCell(size);
     return r;
+}
+
+/// Pixels of `colour` (within 2 per channel) in the bottom-right quarter of `image`.
+int countInBottomRight(const QImage& image, const QColor& colour) {
+    int n = 0;
+    for (int y = image.height() / 2; y < image.height(); ++y) {
+        for (int x = image.width() / 2; x < image.width(); ++x) {
+            n += sameColour(image.pixel(x, y), colour);
+        }
+    }
+    return n;
 }
 
 TEST(SceneRenderer, RendersEveryOverlayTogether) {
@@ -178,6 +191,36 @@ TEST(SceneRenderer, VoidCellsAndForceChainsShowTheirColours) {
         EXPECT_TRUE(sameColour(chains.pixel(pixel), colour, 3))
             << "chain of " << force << " N at " << pixel.x() << "," << pixel.y();
     }
+}
+
+TEST(SceneRenderer, ShadedVoidCellsCarryAColourKey) {
+    // Valence 3 and 10+, and a tenth and ten times the mean area: the ends of the two scales,
+    // each a swatch of the fills' colour as seen over the white cell, at the bottom right.
+    const QSize size(700, 700);
+    const auto seen = [](double t) {
+        const QColor c = sequentialColour(t);
+        const double a = 120 / 255.0; // the fills' alpha (VoidCellsAndForceChainsShowTheirColours)
+        return QColor::fromRgbF(float(a * c.redF() + 1 - a), float(a * c.greenF() + 1 - a),
+                                float(a * c.blueF() + 1 - a));
+    };
+    for (VoidCellShading shading : {VoidCellShading::Valence, VoidCellShading::Area}) {
+        SceneRenderer r = plainRenderer(size);
+        r.options().voidCells = shading;
+        const QImage without = render(r, size);
+        r.options().colourKey = true;
+        const QImage with = render(r, size);
+        for (double t : {0.0, 1.0}) {
+            const int added =
+                countInBottomRight(with, seen(t)) - countInBottomRight(without, seen(t));
+            EXPECT_GT(added, 200) << "shading " << int(shading) << ": no swatch of the key at "
+                                  << t << " of the scale";
+        }
+    }
+    // Without shading there is no key.
+    SceneRenderer r = plainRenderer(size);
+    const QImage without = render(r, size);
+    r.options().colourKey = true;
+    EXPECT_EQ(render(r, size), without);
 }
 
 TEST(SceneRenderer, VoidCellFillsFollowTheOptionsFromFrameToFrame) {

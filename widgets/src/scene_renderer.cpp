@@ -202,19 +202,21 @@ QColor SceneRenderer::voidCellColour(int v) const {
     return voidCellShade(v, v == options_.selectedVoidCell ? 200 : kVoidCellAlpha);
 }
 
-QColor SceneRenderer::voidCellShade(int v, int alpha) const {
-    const VoidCellView& cell = snapshot_->voidCells[v];
-    double t = 0.0;
-    if (options_.voidCells == VoidCellShading::Area && meanVoidArea_ > 0.0) {
+double SceneRenderer::voidCellScalePosition(double valence, double areaOverMean) const {
+    if (options_.voidCells == VoidCellShading::Area) {
         // Log scale: a tenth of the mean area to ten times it, in steps, so that cells of
         // nearly equal area share one brush.
-        t = std::clamp((std::log10(cell.area / meanVoidArea_) + 1.0) / 2.0, 0.0, 1.0);
-        t = std::isfinite(t) ? std::round(t * (kAreaColourSteps - 1)) / (kAreaColourSteps - 1)
-                             : 0.0;
-    } else {
-        t = std::clamp((cell.valence - 3) / 7.0, 0.0, 1.0);
+        const double t = std::clamp((std::log10(areaOverMean) + 1.0) / 2.0, 0.0, 1.0);
+        return std::isfinite(t) ? std::round(t * (kAreaColourSteps - 1)) / (kAreaColourSteps - 1)
+                                : 0.0;
     }
-    QColor fill = sequentialColour(t);
+    return std::clamp((valence - 3) / 7.0, 0.0, 1.0);
+}
+
+QColor SceneRenderer::voidCellShade(int v, int alpha) const {
+    const VoidCellView& cell = snapshot_->voidCells[v];
+    const double areaOverMean = meanVoidArea_ > 0.0 ? cell.area / meanVoidArea_ : 1.0;
+    QColor fill = sequentialColour(voidCellScalePosition(cell.valence, areaOverMean));
     fill.setAlpha(alpha);
     return fill;
 }
@@ -418,6 +420,9 @@ void SceneRenderer::drawOverlays(QPainter& p, QSize viewport, bool voidShading, 
     }
     if (options_.caption) {
         drawCaption(p);
+    }
+    if (options_.colourKey && options_.voidCells != VoidCellShading::Off) {
+        drawColourKey(p, viewport);
     }
     p.restore();
 }

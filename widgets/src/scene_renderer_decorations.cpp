@@ -1,13 +1,16 @@
 // See scene_renderer.h: what frames the scene, the periodic cell below the grains and, on top,
-// the contact-normal rose, the scale bar and the caption.
+// the contact-normal rose, the scale bar, the caption and the void cells' colour key.
 #include "grainlab/ui/scene_renderer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <QFontMetrics>
 #include <QPainter>
+
+#include "grainlab/ui/colour_maps.h"
 
 namespace grainlab::ui {
 namespace {
@@ -92,6 +95,62 @@ void SceneRenderer::drawCaption(QPainter& p) const {
     p.drawRect(QRectF(6.0, 4.0, bounds.width() + 12.0, bounds.height() + 6.0));
     p.setPen(Qt::black);
     p.drawText(QPointF(12.0, 7.0 + p.fontMetrics().ascent()), text);
+}
+
+void SceneRenderer::drawColourKey(QPainter& p, QSize viewport) const {
+    // Swatches as the cells are seen over the white cell: the fills' own alpha over cellFill.
+    struct Swatch {
+        double valence, areaOverMean;
+        QString label;
+    };
+    const bool area = options_.voidCells == VoidCellShading::Area;
+    std::vector<Swatch> swatches;
+    QString title;
+    if (area) {
+        title = QStringLiteral("void-cell area / mean area");
+        for (int k = 0; k <= 8; ++k) {
+            const double ratio = std::pow(10.0, -1.0 + k / 4.0);
+            swatches.push_back(
+                {0.0, ratio, k % 4 == 0 ? QString::number(ratio, 'g', 2) : QString()});
+        }
+    } else {
+        title = QStringLiteral("void-cell valence");
+        for (int v = 3; v <= 10; ++v) {
+            swatches.push_back(
+                {double(v), 1.0, v == 10 ? QStringLiteral("10+") : QString::number(v)});
+        }
+    }
+    const QFontMetrics fm = p.fontMetrics();
+    const double w = 22.0, h = 14.0, pad = 8.0;
+    const double width = std::max(w * double(swatches.size()), double(fm.horizontalAdvance(title)));
+    const double height = fm.height() + h + fm.height() + 4.0;
+    const QRectF box(viewport.width() - width - 2.0 * pad - 10.0,
+                     viewport.height() - height - 2.0 * pad - 10.0, width + 2.0 * pad,
+                     height + 2.0 * pad);
+    p.setPen(QPen(QColor(120, 120, 120), 1.0));
+    p.setBrush(QColor(255, 255, 255, 230));
+    p.drawRect(box);
+    p.setPen(Qt::black);
+    p.drawText(QRectF(box.left() + pad, box.top() + pad, width, fm.height()),
+               Qt::AlignLeft | Qt::AlignVCenter, title);
+    const double top = box.top() + pad + fm.height() + 2.0;
+    for (std::size_t k = 0; k < swatches.size(); ++k) {
+        const QRectF cell(box.left() + pad + w * double(k), top, w, h);
+        const QColor shade =
+            sequentialColour(voidCellScalePosition(swatches[k].valence, swatches[k].areaOverMean));
+        const double a = kVoidCellAlpha / 255.0;
+        const QColor under = options_.cellFill;
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor::fromRgbF(float(a * shade.redF() + (1 - a) * under.redF()),
+                                    float(a * shade.greenF() + (1 - a) * under.greenF()),
+                                    float(a * shade.blueF() + (1 - a) * under.blueF())));
+        p.drawRect(cell);
+        if (!swatches[k].label.isEmpty()) {
+            p.setPen(Qt::black);
+            p.drawText(QRectF(cell.left() - w, cell.bottom() + 2.0, 3.0 * w, fm.height()),
+                       Qt::AlignHCenter | Qt::AlignTop, swatches[k].label);
+        }
+    }
 }
 
 } // namespace grainlab::ui

@@ -8,6 +8,7 @@
 #include <QDir>
 #include <QPainter>
 
+#include "grainlab/measures.h"
 #include "grainlab/shear_metrics.h"
 #include "grainlab/ui/colour_maps.h"
 #include "grainlab/ui/figure_export.h"
@@ -180,9 +181,10 @@ PlotPainter metricKnobPlot(const StudySpec& spec, const StudyPlan& plan,
 PlotPainter curvesPlot(const StudyPlan& plan, const std::vector<RunResult>& results,
                        const std::string& test, const std::string& column) {
     PlotPainter plot;
+    const AxisLabel x = axisLabelOf("eps1"), y = axisLabelOf(column);
     plot.title = QObject::tr("%1 against ε1 at %2").arg(q(column), q(test));
-    plot.xAxis.title = QObject::tr("ε1 [-]");
-    plot.yAxis.title = q(column) + " [-]";
+    plot.xAxis.title = q(x.text);
+    plot.yAxis.title = q(y.text);
     std::vector<std::vector<Curve>> bySetting(plan.settings.size());
     double reach = std::numeric_limits<double>::infinity();
     for (const RunResult& r : results) {
@@ -207,11 +209,15 @@ PlotPainter curvesPlot(const StudyPlan& plan, const std::vector<RunResult>& resu
         }
         const CurveBand band = meanCurve(bySetting[s], grid);
         PlotCurve c;
-        c.x = band.x;
-        c.y = band.mean;
+        for (std::size_t k = 0; k < band.x.size(); ++k) {
+            c.x.push_back(band.x[k] * x.scale);
+            c.y.push_back(band.mean[k] * y.scale);
+        }
         c.label = q(plan.settings[s].id);
         if (plan.settings[s].isReference) {
-            c.band = band.sd;
+            for (double sd : band.sd) {
+                c.band.push_back(sd * y.scale);
+            }
             c.colour = QColor(60, 60, 60);
             c.width = 2.5;
             c.label += QObject::tr(" (± 1σ)");

@@ -124,6 +124,17 @@ const std::vector<SeriesColumn>& seriesColumns();
 /// "name [unit]" (the text column `stage`: its bare name).
 std::string seriesHeader(const SeriesColumn& column);
 
+/// How a figure labels a series column, as a paper would print it: the symbol, with the unit of
+/// the plotted values ("ε1 [%]", "q [kPa]", "q/p" for a ratio), and the factor from the stored
+/// value to the plotted one (100 for strains in percent, 1e-3 for stresses in kPa). The CSVs keep
+/// the column names and stored units; only drawings use this.
+struct AxisLabel {
+    std::string text;
+    double scale = 1.0;
+};
+/// For a column of seriesColumns(); any other name is returned as it is, with scale 1.
+AxisLabel axisLabelOf(const std::string& column);
+
 /// What a row needs beyond the contact network: supplied by the recorder.
 struct RecordInputs {
     std::int64_t step = 0;       ///< [-]

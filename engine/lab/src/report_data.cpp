@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "grainlab/measures.h"
 #include "grainlab/shear_metrics.h"
 
 namespace grainlab {
@@ -34,7 +35,9 @@ std::vector<TestKey> testsOf(const std::vector<ReportRun>& runs) {
     return keys;
 }
 
-std::string pressureLabel(double pressure) { return fmt::format("{:g} kPa", pressure / 1e3); }
+std::string pressureLabel(double pressure) {
+    return fmt::format("{:g} kPa", pressure / 1e3);
+}
 
 /// The table of test `test` in each run that has it with shear rows, with its pressure.
 std::vector<std::pair<const SeriesTable*, double>> tablesOf(const std::vector<ReportRun>& runs,
@@ -181,11 +184,21 @@ ReportLine dilatancyLine(const std::vector<ReportRun>& runs, const TestKey& key,
     return line;
 }
 
+/// A figure of `yColumn` against `xColumn`, labelled as a paper would (axisLabelOf).
+ReportFigure figureOf(std::string name, std::string title, const std::string& xColumn,
+                      const std::string& yColumn) {
+    const AxisLabel x = axisLabelOf(xColumn), y = axisLabelOf(yColumn);
+    ReportFigure f{
+        std::move(name), std::move(title), xColumn, x.text, yColumn, y.text, {}, std::nullopt, ""};
+    f.xScale = x.scale;
+    f.yScale = y.scale;
+    return f;
+}
+
 ReportFigure strainFigure(const std::vector<ReportRun>& runs, const std::vector<TestKey>& keys,
                           std::string name, std::string title, const std::string& column,
-                          std::string yLabel, const ReportOptions& options) {
-    ReportFigure f{std::move(name), std::move(title), "eps1", "ε1 [-]", column,
-                   std::move(yLabel), {}, std::nullopt, ""};
+                          const ReportOptions& options) {
+    ReportFigure f = figureOf(std::move(name), std::move(title), "eps1", column);
     for (const TestKey& key : keys) {
         ReportLine line = strainLine(runs, key, column, options);
         if (!line.x.empty()) {
@@ -265,13 +278,20 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
     const auto add = [&](ReportFigure f) { figures.push_back(std::move(f)); };
 
     // 1. q and q/p against eps1.
-    add(strainFigure(runs, keys, "01_q", "Deviator stress", "q", "q [Pa]", options));
-    add(strainFigure(runs, keys, "01_q_over_p", "Stress ratio", "q_over_p", "q/p [-]", options));
+    add(strainFigure(runs, keys, "01_q", "Deviator stress", "q", options));
+    add(strainFigure(runs, keys, "01_q_over_p", "Stress ratio", "q_over_p", options));
 
     // 2. phi at the peak of q/p against the confining pressure.
     {
-        ReportFigure f{"02_phi_peak", "Friction angle at the peak", "pressure",
-                       "confining pressure [kPa]", "phi_deg", "φ at peak [deg]", {}, {}, ""};
+        ReportFigure f{"02_phi_peak",
+                       "Friction angle at the peak",
+                       "pressure",
+                       "confining pressure [kPa]",
+                       "phi_deg",
+                       "φ at the peak [°]",
+                       {},
+                       {},
+                       ""};
         ReportLine line;
         line.label = "mean ± 1σ over runs";
         line.points = true;
@@ -293,13 +313,13 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
     }
 
     // 3. eps_v and the dilatancy index against eps1.
-    add(strainFigure(runs, keys, "03_epsv", "Volumetric strain", "epsv", "εv [-]", options));
+    add(strainFigure(runs, keys, "03_epsv", "Volumetric strain", "epsv", options));
     {
-        ReportFigure f{"03_DI", "Dilatancy index", "eps1", "ε1 [-]", "DI", "−dεv/dε1 [-]", {}, {},
-                       fmt::format("smoothed: central difference of εv over an ε1 window of {:g} "
-                                   "(the recorded finite difference between records is the "
-                                   "DI_raw columns of the CSV)",
-                                   options.dilatancyWindow)};
+        ReportFigure f = figureOf("03_DI", "Dilatancy index", "eps1", "DI");
+        f.note = fmt::format("smoothed: central difference of εv over an ε1 window of {:g} % "
+                             "(the recorded finite difference between records is the "
+                             "DI_raw columns of the CSV)",
+                             100.0 * options.dilatancyWindow);
         for (const TestKey& key : keys) {
             ReportLine line = dilatancyLine(runs, key, options);
             if (!line.x.empty()) {
@@ -310,13 +330,13 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
     }
 
     // 4. Z, Z_eff and S against eps1; Z and Z_eff together at the lowest and highest pressure.
-    add(strainFigure(runs, keys, "04_Z", "Coordination number", "Z", "Z [-]", options));
-    add(strainFigure(runs, keys, "04_Z_eff", "Load-bearing coordination number", "Z_eff",
-                     "Z̄ [-]", options));
-    add(strainFigure(runs, keys, "04_S", "Sliding contacts", "S", "S [-]", options));
+    add(strainFigure(runs, keys, "04_Z", "Coordination number", "Z", options));
+    add(strainFigure(runs, keys, "04_Z_eff", "Load-bearing coordination number", "Z_eff", options));
+    add(strainFigure(runs, keys, "04_S", "Sliding contacts", "S", options));
     {
-        ReportFigure f{"04_Z_and_Z_eff", "Z and Z̄ at the lowest and highest pressure", "eps1",
-                       "ε1 [-]", "Z", "Z, Z̄ [-]", {}, {}, ""};
+        ReportFigure f =
+            figureOf("04_Z_and_Z_eff", "Z and Z̄ at the lowest and highest pressure", "eps1", "Z");
+        f.yLabel = "Z, Z̄";
         std::vector<TestKey> ends;
         if (!keys.empty()) {
             ends.push_back(keys.front());
@@ -338,10 +358,10 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
 
     // 6. N_v/N_vi against eps1; Z_eff against N_v/N_vi with the pooled fit.
     add(strainFigure(runs, keys, "06_Nv_over_Nvi", "Void cells per initial void cell",
-                     "Nv_over_Nvi", "N_v/N_vi [-]", options));
+                     "Nv_over_Nvi", options));
     {
-        ReportFigure f{"06_Z_eff_vs_Nv_over_Nvi", "Z̄ against N_v/N_vi", "Nv_over_Nvi",
-                       "N_v/N_vi [-]", "Z_eff", "Z̄ [-]", {}, {}, ""};
+        ReportFigure f =
+            figureOf("06_Z_eff_vs_Nv_over_Nvi", "Z̄ against N_v/N_vi", "Nv_over_Nvi", "Z_eff");
         std::vector<double> x, y;
         for (const TestKey& key : keys) {
             ReportLine line = parametricLine(runs, key, "Nv_over_Nvi", "Z_eff", options);
@@ -358,19 +378,18 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
     }
 
     // 7. H11 - H22 against eps1: all, strong and weak contacts.
-    add(strainFigure(runs, keys, "07_Hdev", "Fabric anisotropy, all contacts", "Hdev",
-                     "H11 − H22 [-]", options));
+    add(strainFigure(runs, keys, "07_Hdev", "Fabric anisotropy, all contacts", "Hdev", options));
     add(strainFigure(runs, keys, "07_Hsdev", "Fabric anisotropy, strong contacts", "Hsdev",
-                     "H11 − H22 (strong) [-]", options));
-    add(strainFigure(runs, keys, "07_Hwdev", "Fabric anisotropy, weak contacts", "Hwdev",
-                     "H11 − H22 (weak) [-]", options));
+                     options));
+    add(strainFigure(runs, keys, "07_Hwdev", "Fabric anisotropy, weak contacts", "Hwdev", options));
 
     // 8. q/p against the fabric's anisotropy ratio, all and strong contacts.
     for (const auto& [name, column, which] :
          {std::tuple{"08_q_over_p_vs_Hratio", "Hratio", "all contacts"},
           std::tuple{"08_q_over_p_vs_Hsratio", "Hsratio", "strong contacts"}}) {
-        ReportFigure f{name, fmt::format("Stress ratio against fabric anisotropy, {}", which),
-                       column, "(H11 − H22)/(H11 + H22) [-]", "q_over_p", "q/p [-]", {}, {}, ""};
+        ReportFigure f =
+            figureOf(name, fmt::format("Stress ratio against fabric anisotropy, {}", which), column,
+                     "q_over_p");
         for (const TestKey& key : keys) {
             ReportLine line = parametricLine(runs, key, column, "q_over_p", options);
             if (!line.x.empty()) {
@@ -382,9 +401,15 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
     return figures;
 }
 
-PublishedValue publishedVoidRatio() { return {kPublishedVoidRatio, false, "0.126"}; }
-PublishedValue publishedFitSlope() { return {kPublishedFitSlope, false, "3.45"}; }
-PublishedValue publishedFitIntercept() { return {kPublishedFitIntercept, false, "2.1"}; }
+PublishedValue publishedVoidRatio() {
+    return {kPublishedVoidRatio, false, "0.126"};
+}
+PublishedValue publishedFitSlope() {
+    return {kPublishedFitSlope, false, "3.45"};
+}
+PublishedValue publishedFitIntercept() {
+    return {kPublishedFitIntercept, false, "2.1"};
+}
 PublishedValue publishedUnbalancedForce() {
     return {kPublishedUnbalancedForceMax, true, "< 0.4 %"};
 }
@@ -417,19 +442,36 @@ std::vector<HeadlineRow> headlineTable(const std::vector<ReportRun>& runs) {
         {"e_compacted", "e after compaction", "-",
          [](const SeriesTable& t, double p) { return shearMetrics(t, p).voidRatioAtStart; },
          publishedVoidRatio()},
-        {"peak_q_over_p", "peak q/p", "-",
-         [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakStressRatio; }, {}},
-        {"phi_at_peak", "φ at peak", "deg",
-         [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakFrictionAngle; }, {}},
-        {"eps1_at_peak", "ε1 at peak", "-",
-         [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakAxialStrain; }, {}},
-        {"epsv_at_10pc", "εv at ε1 = 10 %", "-",
+        {"peak_q_over_p",
+         "peak q/p",
+         "-",
+         [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakStressRatio; },
+         {}},
+        {"phi_at_peak",
+         "φ at peak",
+         "deg",
+         [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakFrictionAngle; },
+         {}},
+        {"eps1_at_peak",
+         "ε1 at peak",
+         "-",
+         [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakAxialStrain; },
+         {}},
+        {"epsv_at_10pc",
+         "εv at ε1 = 10 %",
+         "-",
          [](const SeriesTable& t, double p) { return shearMetrics(t, p).volumetricStrainAt[2]; },
          {}},
-        {"Z_eff_minus_Z", "Z̄ − Z averaged over shear", "-",
-         [](const SeriesTable& t, double) { return meanDifference(t, "Z_eff", "Z"); }, {}},
-        {"Nv_over_Nvi_at_10pc", "N_v/N_vi at ε1 = 10 %", "-",
-         [](const SeriesTable& t, double p) { return shearMetrics(t, p).voidCountRatioAt10; }, {}},
+        {"Z_eff_minus_Z",
+         "Z̄ − Z averaged over shear",
+         "-",
+         [](const SeriesTable& t, double) { return meanDifference(t, "Z_eff", "Z"); },
+         {}},
+        {"Nv_over_Nvi_at_10pc",
+         "N_v/N_vi at ε1 = 10 %",
+         "-",
+         [](const SeriesTable& t, double p) { return shearMetrics(t, p).voidCountRatioAt10; },
+         {}},
         {"fit_slope", "slope of Z̄ on N_v/N_vi", "-",
          [](const SeriesTable& t, double) -> std::optional<double> {
              const auto f = fitOfTest(t);
@@ -445,7 +487,9 @@ std::vector<HeadlineRow> headlineTable(const std::vector<ReportRun>& runs) {
         {"I_uf_mean", "mean I_uf during shear", "%",
          [](const SeriesTable& t, double p) { return shearMetrics(t, p).meanUnbalancedForce; },
          publishedUnbalancedForce()},
-        {"lateral_stress_error_max", "largest lateral-stress error", "-",
+        {"lateral_stress_error_max",
+         "largest lateral-stress error",
+         "-",
          [](const SeriesTable& t, double p) { return shearMetrics(t, p).maxLateralStressError; },
          {}},
     };

@@ -50,12 +50,14 @@ struct ReportFigure {
     std::string name;     ///< the file stem, e.g. "01_q_over_p"
     std::string title;
     std::string xColumn;  ///< the series column on x ("eps1", ...; "pressure" for figure 2)
-    std::string xLabel;   ///< with its unit, e.g. "ε1 [-]"
+    std::string xLabel;   ///< as a paper prints it, with the drawn unit, e.g. "ε1 [%]"
     std::string yColumn;
     std::string yLabel;
-    std::vector<ReportLine> lines;
+    std::vector<ReportLine> lines; ///< in the columns' stored units (the CSV's)
     std::optional<LinearFit> fit; ///< drawn as a line with its equation (figure 6)
     std::string note;             ///< a sentence for the report (e.g. the smoothing window)
+    double xScale = 1.0; ///< drawn value = stored value * scale (100: a strain in percent)
+    double yScale = 1.0;
 };
 
 /// How the figures sample the curves.

@@ -101,6 +101,9 @@ struct SceneOptions {
     bool contactRose = false; ///< polar histogram of contact normals in a corner
     bool scaleBar = true;
     bool caption = true;              ///< step, stage and eps1 at the top left
+    /// The key of the void-cell colours (valence, or area over the mean area) at the bottom
+    /// right, when void cells are shaded.
+    bool colourKey = true;
     double rotationRange = 0.5;       ///< |rotation| mapped to the end of the colour scale [rad]
     QColor background{250, 250, 250}; ///< outside the cell
     QColor cellFill{255, 255, 255};   ///< inside the cell
@@ -212,6 +215,10 @@ private:
     void drawRose(QPainter& p, QSize viewport) const;
     void drawScaleBar(QPainter& p, QSize viewport) const;
     void drawCaption(QPainter& p) const;
+    void drawColourKey(QPainter& p, QSize viewport) const;
+    /// Where a void cell's valence, or area over the mean area, sits on the colour scale [0, 1]
+    /// of the current shading (one rule for the fills and their key).
+    double voidCellScalePosition(double valence, double areaOverMean) const;
 
     SnapshotPtr snapshot_;
     SceneOptions options_;
