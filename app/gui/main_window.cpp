@@ -174,8 +174,13 @@ MainWindow::MainWindow(RunMaker maker, QWidget* parent)
     });
     connect(charts_, &ChartsPanel::hoveredAxialStrain, this, &MainWindow::chartHovered);
     connect(charts_, &ChartsPanel::hoverEnded, this, &MainWindow::chartHoverEnded);
-    connect(parameters_, &ParametersPanel::edited, this,
-            [this](bool) { updateControls(controller_->status().state); });
+    connect(parameters_, &ParametersPanel::edited, this, [this](bool) {
+        updateControls(controller_->status().state);
+        startingAssemblyTimer_.start();
+    });
+    startingAssemblyTimer_.setSingleShot(true);
+    startingAssemblyTimer_.setInterval(300);
+    connect(&startingAssemblyTimer_, &QTimer::timeout, this, &MainWindow::showStartingAssembly);
     connect(controller_.get(), &SimulationController::stateChanged, this,
             [this](RunState) { refresh(); });
     controller_->setPublishInterval(kFrameMs / 1000.0);
@@ -293,6 +298,32 @@ void MainWindow::setExperiment(const ExperimentConfig& config) {
             : QStringLiteral(" — %1").arg(QString::fromStdString(config.sourcePath));
     setWindowTitle(
         QStringLiteral("GrainLab — %1%2").arg(QString::fromStdString(config.name), source));
+    viewingFile_ = false;
+    startingAssemblyTimer_.stop();
+    showStartingAssembly();
+}
+
+void MainWindow::showStartingAssembly() {
+    const RunState state = controller_->status().state;
+    if (state == RunState::Running || state == RunState::Paused || viewingFile_) {
+        return;
+    }
+    startingAssembly_.reset();
+    if (parameters_->valid()) {
+        try {
+            // No output: nothing is written; the runner's first stage is the generated grid.
+            const ExperimentRunner runner(parameters_->applied());
+            auto snapshot = runner.snapshot();
+            snapshot->stage = tr("generated assembly, before Start").toStdString();
+            startingAssembly_ = std::move(snapshot);
+        } catch (const std::exception&) {
+            // Parameters that cannot make an assembly: Start says why (prepareRun).
+        }
+    }
+    scene_->selectGrain(-1);
+    scene_->selectVoidCell(-1);
+    scene_->setSnapshot(startingAssembly_);
+    inspector_->clear();
 }
 
 bool MainWindow::prepareRun() {

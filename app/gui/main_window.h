@@ -158,6 +158,9 @@ public:
     WarningLabel* warningLabel() const { return warning_; }
     QProgressBar* progressBar() const { return progress_; }
     QSlider* runFileSlider() const { return scrub_; }
+    /// The generated assembly the next Start begins from, shown in the scene while no run is
+    /// going (null before an experiment is loaded, or when the parameters cannot make one).
+    const SnapshotPtr& startingAssembly() const { return startingAssembly_; }
 
 public slots:
     void startRun();
@@ -198,6 +201,9 @@ private:
     /// The scene follows a chart hover at `eps1`; chartHoverEnded() returns it to the live run.
     void chartHovered(double eps1);
     void chartHoverEnded();
+    /// Generates the assembly of the experiment as loaded and edited (the grid the run starts
+    /// from) and shows it in the scene, unless a run is going or a run file is viewed.
+    void showStartingAssembly();
 
     RunMaker maker_;
     ExperimentConfig experiment_;
@@ -213,6 +219,8 @@ private:
     bool viewingFile_ = false;    ///< the scene shows a run file's checkpoint, not the live run
     bool viewingHistory_ = false; ///< the scene shows a kept snapshot of the live run (hover)
     QTimer timer_;
+    QTimer startingAssemblyTimer_; ///< spaces regenerations while parameters are typed
+    SnapshotPtr startingAssembly_;
     QElapsedTimer clock_;          ///< monotonic, for the picture budget
     PictureBudget budget_;         ///< set by prepareRun() for each run
     int runEngineThreads_ = 1;     ///< the engine threads of the current (or last) run

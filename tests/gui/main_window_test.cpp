@@ -160,6 +160,59 @@ TEST(MainWindow, ClickAVoidCellWhilePausedAndExportTheFigureSet) {
     EXPECT_TRUE(QFile::exists(dir.filePath(QStringLiteral("void_cells.pdf"))));
 }
 
+/// Pixels of the scene widget drawn in the grains' fill colours (not background, not cell fill).
+int grainPixels(SceneView* scene) {
+    const QImage image = scene->grab().toImage();
+    const SceneOptions& o = scene->renderer().options();
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            const auto near = [&](const QColor& a) {
+                return std::abs(c.red() - a.red()) + std::abs(c.green() - a.green()) +
+                           std::abs(c.blue() - a.blue()) <
+                       12;
+            };
+            n += !near(o.background) && !near(o.cellFill);
+        }
+    }
+    return n;
+}
+
+TEST(MainWindow, ShowsTheGeneratedAssemblyBeforeStart) {
+    // A newcomer sees the experiment as soon as it is loaded: the grid the run starts from, with
+    // the loaded grain count, drawn; an edit of the parameters regenerates it, and Start then
+    // shows the run itself.
+    Fixture f;
+    MainWindow& w = f.window;
+    ASSERT_TRUE(waitFor([&] { return QTest::qWaitForWindowExposed(&w); }));
+    ASSERT_NE(f.shown(), nullptr) << "the scene is empty before Start";
+    EXPECT_EQ(f.shown(), w.startingAssembly());
+    EXPECT_EQ(f.shown()->x1.size(), 120u);
+    EXPECT_EQ(f.shown()->step, 0);
+    EXPECT_EQ(f.state(), RunState::Idle);
+    // Grains do not touch on the generated grid.
+    EXPECT_TRUE(f.shown()->network.contacts.empty());
+    const int drawn = grainPixels(w.sceneView());
+    EXPECT_GT(drawn, 2000) << "the generated assembly is not drawn";
+
+    w.parametersPanel()->grainCountEdit()->setValue(300);
+    ASSERT_TRUE(waitFor([&] { return f.shown() && f.shown()->x1.size() == 300u; }, 10000));
+    EXPECT_EQ(f.shown(), w.startingAssembly());
+    EXPECT_GT(grainPixels(w.sceneView()), 2000);
+
+    // The same grid as the run's own first picture: Start replaces it with the run's snapshots.
+    const SnapshotPtr before = f.shown();
+    click(w, w.startAction());
+    ASSERT_TRUE(waitFor([&] {
+        w.refresh();
+        return f.shown() != before && f.shown()->step > 0;
+    }));
+    EXPECT_EQ(f.shown()->x1.size(), 300u);
+    click(w, w.stopAction());
+    ASSERT_TRUE(waitFor([&] { return f.state() == RunState::Idle; }));
+}
+
 TEST(MainWindow, ParametersAreValidatedBeforeARun) {
     Fixture f;
     MainWindow& w = f.window;
