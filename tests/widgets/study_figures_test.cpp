@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../engine/series_builder.h"
 #include "grainlab/ui/study_figures.h"
 
 namespace grainlab::ui {
@@ -41,6 +42,29 @@ StudyPlan planOfThree() {
     StudyPlan p;
     p.settings = {{"ref", {}, true}, {"a", {}, false}, {"b", {}, false}};
     return p;
+}
+
+TEST(StudyFigures, CurvesAreLabelledAsAPaperWouldAndDrawnInTheirUnits) {
+    // εv = -0.5 ε1 over a shear to 10 %: drawn as εv [%] against ε1 [%], i.e. -5 at 10.
+    StudyPlan plan = planOfThree();
+    plan.runs = {{"ref-seed1", 0, 1, ""}};
+    test::SeriesBuilder b("p015kPa");
+    for (int k = 0; k <= 10; ++k) {
+        auto& r = b.row("shear 15 kPa");
+        b.at(r, "eps1") = 0.01 * k;
+        b.at(r, "epsv") = -0.005 * k;
+    }
+    RunResult result;
+    result.tests = {b.t};
+    result.pressures = {15e3};
+    const PlotPainter plot = curvesPlot(plan, {result}, "p015kPa", "epsv");
+    EXPECT_EQ(plot.xAxis.title, QStringLiteral("ε1 [%]"));
+    EXPECT_EQ(plot.yAxis.title, QStringLiteral("εv [%]"));
+    ASSERT_EQ(plot.curves.size(), 1u);
+    EXPECT_NEAR(plot.curves[0].x.back(), 10.0, 1e-12);
+    EXPECT_NEAR(plot.curves[0].y.back(), -5.0, 1e-12);
+    EXPECT_EQ(plot.curves[0].band.size(), plot.curves[0].y.size());
+    EXPECT_EQ(curvesPlot(plan, {result}, "p015kPa", "q_over_p").yAxis.title, QStringLiteral("q/p"));
 }
 
 TEST(StudyFigures, ErrorAgainstCostDrawsOnePointPerSettingOverTheNoiseBand) {
