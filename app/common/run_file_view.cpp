@@ -115,7 +115,7 @@ int nearestCheckpoint(const RunFileView& file, const std::string& test, double e
     for (std::size_t k = 0; k < file.checkpointStrain.size(); ++k) {
         const double strain = file.checkpointStrain[k];
         if (std::isnan(strain) || (!test.empty() && file.checkpointTest[k] != test) ||
-            k >= file.checkpointKind.size() || file.checkpointKind[k] != StageKind::Shear) {
+            k >= file.checkpointKind.size() || !isTestStage(file.checkpointKind[k])) {
             continue;
         }
         if (std::fabs(strain - eps1) < distance) {

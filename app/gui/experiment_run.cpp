@@ -64,7 +64,7 @@ private:
             folder_->record(series);
         }
         // The record just made is of the stage under way: the history keeps the test's.
-        if (!history_ || series.rows.empty() || runner_.progress().kind != StageKind::Shear) {
+        if (!history_ || series.rows.empty() || !isTestStage(runner_.progress().kind)) {
             return;
         }
         const std::int64_t record = shearRecords_++;

@@ -252,7 +252,7 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
     const JsonSection top(sourceName, root, "",
                           {"name", "description", "seed", "threads", "grains", "material",
                            "time_step", "damping", "servo", "stability", "neighbour_skin",
-                           "compaction", "shear", "record"});
+                           "compaction", "shear", "record", "test"});
     if (top.has("description") && !top.at("description").is_string()) {
         top.refuse("description", top.at("description"),
                    fmt::format("a string (got {})", jsonTypeName(top.at("description"))));
@@ -420,6 +420,19 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
     checkStrainRate(shear, config.shear.maxStrainRate, p.timeStep);
     checkLateralServoFollows(shear, config.shear, p.timeStep);
     checkServoInterval(servo, config);
+    config.tests = readLoadingPaths(top);
+    for (std::size_t k = 0; k < config.tests.size(); ++k) {
+        const LoadingPath::Kind kind = config.tests[k].kind;
+        if (kind == LoadingPath::Kind::Cyclic || kind == LoadingPath::Kind::Probes) {
+            const std::string key = top.at("test").is_array() ? fmt::format("test[{}].kind", k)
+                                                               : std::string("test.kind");
+            throw ExperimentFileError(
+                sourceName, key,
+                fmt::format("{} = \"{}\": not available in this version (available: drained, "
+                            "constant_volume, constant_p, stress_path)",
+                            key, loadingKindName(kind)));
+        }
+    }
     return config;
 }
 

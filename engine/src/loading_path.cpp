@@ -46,12 +46,62 @@ const char* loadingKindName(LoadingPath::Kind kind) {
     return kKindNames[std::size_t(kind)].c_str();
 }
 
-LoadingPath readLoadingPath(const JsonSection& experiment) {
+namespace {
+
+std::vector<std::string> testKeys() {
     std::vector<std::string> known = {"kind"};
     for (const auto& [key, kinds] : keyKinds()) {
         known.push_back(key);
     }
-    const JsonSection t = experiment.child("test", known, false);
+    return known;
+}
+
+LoadingPath readTest(const JsonSection& t);
+
+} // namespace
+
+LoadingPath readLoadingPath(const JsonSection& experiment) {
+    return readTest(experiment.child("test", testKeys(), false));
+}
+
+std::vector<LoadingPath> readLoadingPaths(const JsonSection& experiment) {
+    std::vector<LoadingPath> paths;
+    std::vector<std::string> names;
+    for (const JsonSection& t : experiment.objects("test", testKeys())) {
+        paths.push_back(readTest(t));
+        const std::string name = testSuffix(paths.back());
+        if (std::find(names.begin(), names.end(), name) != names.end()) {
+            t.fail("kind", fmt::format("{}: a second test of the same kind{} (each test of a "
+                                       "sample needs its own kind or slope)",
+                                       t.path(), paths.back().kind == Kind::StressPath
+                                                     ? " and slope"
+                                                     : ""));
+        }
+        names.push_back(name);
+    }
+    if (paths.empty()) {
+        paths.push_back(LoadingPath{});
+    }
+    return paths;
+}
+
+std::string testSuffix(const LoadingPath& path) {
+    switch (path.kind) {
+    case Kind::Drained:
+        return "";
+    case Kind::StressPath:
+        return fmt::format("-path{:+g}", path.slope);
+    default: {
+        std::string name = loadingKindName(path.kind);
+        std::replace(name.begin(), name.end(), '_', '-');
+        return "-" + name;
+    }
+    }
+}
+
+namespace {
+
+LoadingPath readTest(const JsonSection& t) {
     LoadingPath path;
     const std::string kindName = t.choice("kind", kKindNames, "drained");
     path.kind =
@@ -119,6 +169,8 @@ LoadingPath readLoadingPath(const JsonSection& experiment) {
     }
     return path;
 }
+
+} // namespace
 
 CyclicStrainSchedule::CyclicStrainSchedule(double eps0, double mean, double amplitude,
                                            double strainPerStep)

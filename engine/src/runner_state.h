@@ -18,7 +18,7 @@
 
 namespace grainlab {
 
-/// The running maximum of q/p of a shear test under way (stage_drained_shear.h).
+/// The running maximum of q/p of a shear test under way (stage_monotonic_test.h).
 struct RunningPeakRecord {
     double stressRatio = 0; ///< q/p [-]
     std::int64_t step = 0;
@@ -49,7 +49,7 @@ struct RunnerState {
     // Equilibrium stages (stage_equilibrium.h).
     int calm = 0;
     std::array<double, 4> unbalancedLow{-1, -1, -1, -1}; ///< CalmHistory::lowest [%]
-    // The shear test (stage_drained_shear.h).
+    // The shear test (stage_monotonic_test.h).
     double voidsAtStart = -1; ///< N_vi of the test; -1 before its first record
     std::optional<RunningPeakRecord> peak;
 };

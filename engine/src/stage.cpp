@@ -5,21 +5,45 @@
 #include <fmt/format.h>
 
 #include "stage_compaction.h"
-#include "stage_drained_shear.h"
+#include "stage_monotonic_test.h"
 #include "stage_equilibration.h"
 
 namespace grainlab {
+
+StageKind stageKindOf(const LoadingPath& path) {
+    switch (path.kind) {
+    case LoadingPath::Kind::Drained:
+        return StageKind::Shear;
+    case LoadingPath::Kind::ConstantVolume:
+        return StageKind::ConstantVolume;
+    case LoadingPath::Kind::ConstantP:
+        return StageKind::ConstantP;
+    case LoadingPath::Kind::StressPath:
+        return StageKind::StressPath;
+    case LoadingPath::Kind::Cyclic:
+    case LoadingPath::Kind::Probes:
+        break;
+    }
+    throw std::invalid_argument(fmt::format("experiment: tests of kind {} are not available",
+                                            loadingKindName(path.kind)));
+}
 
 std::vector<PlannedStage> experimentPlan(const ExperimentConfig& config) {
     std::vector<PlannedStage> plan;
     const auto& compaction = config.compaction.pressures;
     for (std::size_t k = 0; k < compaction.size(); ++k) {
-        plan.push_back({StageKind::Compaction, int(k), compaction[k]});
+        plan.push_back({StageKind::Compaction, int(k), compaction[k], 0, ""});
     }
-    const auto& tests = config.shear.pressures;
-    for (std::size_t k = 0; k < tests.size(); ++k) {
-        plan.push_back({StageKind::Equilibration, int(k), tests[k]});
-        plan.push_back({StageKind::Shear, int(k), tests[k]});
+    const auto& pressures = config.shear.pressures;
+    const std::size_t n = config.tests.size();
+    for (std::size_t k = 0; k < pressures.size(); ++k) {
+        for (std::size_t j = 0; j < n; ++j) {
+            const int index = int(k * n + j);
+            const std::string series = testName(pressures[k]) + testSuffix(config.tests[j]);
+            plan.push_back({StageKind::Equilibration, index, pressures[k], int(j), series});
+            plan.push_back(
+                {stageKindOf(config.tests[j]), index, pressures[k], int(j), series});
+        }
     }
     return plan;
 }
@@ -45,7 +69,10 @@ std::unique_ptr<Stage> makeStage(const PlannedStage& planned) {
     case StageKind::Equilibration:
         return std::make_unique<EquilibrationStage>(planned);
     case StageKind::Shear:
-        return std::make_unique<DrainedShearStage>(planned);
+    case StageKind::ConstantVolume:
+    case StageKind::ConstantP:
+    case StageKind::StressPath:
+        return std::make_unique<MonotonicTestStage>(planned);
     case StageKind::Done:
         break;
     }

@@ -5,7 +5,8 @@
 //
 // Each stage kind is a class of its own file pair (stage_*.h): compaction (stage_compaction.h)
 // and re-equilibration (stage_equilibration.h), both waiting for equilibrium
-// (stage_equilibrium.h), and the drained biaxial shear test (stage_drained_shear.h). The
+// (stage_equilibrium.h), and the tests that strain axis 1 monotonically while axis 2 follows
+// their path: drained, constant volume, constant p, linear stress path (stage_monotonic_test.h). The
 // generated assembly is made by stage_generation.h. A stage owns:
 //  - how it drives the cell: start() sets each axis's control (Simulation::setAxisControl); a
 //    test that changes them during its course does so in handleEvents();
@@ -20,7 +21,7 @@
 //  - its share of the progress estimate (share(), progress_estimate.h).
 //
 // A new test kind (constant volume, cyclic, probes, ...) is a new StageKind value
-// (grainlab/stage_kind.h), a class like DrainedShearStage in its own stage_*.{h,cpp}, a case in
+// (grainlab/stage_kind.h), a class like MonotonicTestStage in its own stage_*.{h,cpp}, a case in
 // makeStage() and experimentPlan() below, and the experiment file's key that selects it
 // (experiment_file.cpp). The runner itself does not change.
 //
@@ -46,12 +47,20 @@ namespace grainlab {
 /// One entry of a run's plan: a stage kind at a pressure.
 struct PlannedStage {
     StageKind kind = StageKind::Compaction;
-    int index = 0;       ///< into compaction.pressures (compaction) or shear.pressures (tests)
+    /// Compaction: into compaction.pressures. Re-equilibration and test: pressure k's test j is
+    /// k * tests.size() + j (k, into shear.pressures, with one test per sample as before).
+    int index = 0;
     double pressure = 0; ///< the confining pressure [Pa]
+    int test = 0;        ///< into ExperimentConfig::tests (re-equilibration and test)
+    std::string series;  ///< the series its records go to ("" for compaction)
 };
 
+/// The stage kind that plays a test of `path`.
+StageKind stageKindOf(const LoadingPath& path);
+
 /// The stages of an experiment, in order: compaction to each pressure, then for each test
-/// pressure its re-equilibration and its test.
+/// pressure and each of its tests (ExperimentConfig::tests) a re-equilibration of the sample and
+/// the test.
 std::vector<PlannedStage> experimentPlan(const ExperimentConfig& config);
 /// Where the stage of a runner state (phase, index) is in `plan`; plan.size() when done.
 std::size_t planPosition(const std::vector<PlannedStage>& plan, StageKind kind, int index);
@@ -66,8 +75,9 @@ public:
     StageKind kind() const { return planned_.kind; }
     int index() const { return planned_.index; }
     double pressure() const { return planned_.pressure; } ///< [Pa]
+    int testIndex() const { return planned_.test; }      ///< into ExperimentConfig::tests
     /// The series its records go to.
-    virtual std::string test() const = 0;
+    virtual std::string test() const { return planned_.series; }
     /// True for a test (its eps1 is the test's axial strain, reported in RunProgress).
     virtual bool isTest() const { return false; }
 

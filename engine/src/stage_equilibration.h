@@ -1,7 +1,8 @@
 #pragma once
-// The re-equilibration before a test: the sample of the test's pressure
-// (shear.pressures[index]) with the test's friction and servo rate, servoed at that pressure
-// until at rest again. Starts the test's series (named by testName()) and its strain reference
+// The re-equilibration before a test: the sample of the test's pressure, as compacted, with the
+// test's friction and servo rate, servoed at that pressure until at rest again (each test of a
+// sample starts from it afresh). Starts the test's series (its sample's testName() and the
+// test's testSuffix()) and its strain reference
 // and orientation reference (thetaAtTestStart), and writes a checkpoint at its start. The test
 // follows at once when it ends, with no checkpoint of its own.
 
@@ -15,7 +16,6 @@ std::string testName(double pressure);
 class EquilibrationStage final : public EquilibriumStage {
 public:
     using EquilibriumStage::EquilibriumStage;
-    std::string test() const override { return testName(pressure()); }
     void start(RunContext& ctx) override;
     void finish(RunContext& ctx) override { ctx.recordNow(); }
     bool checkpointAtEnd() const override { return false; }

@@ -8,14 +8,22 @@
 namespace grainlab {
 namespace {
 
-constexpr std::array<std::pair<StageKind, const char*>, 4> kNames{{
+constexpr std::array<std::pair<StageKind, const char*>, 7> kNames{{
     {StageKind::Compaction, "compaction"},
     {StageKind::Equilibration, "equilibration"},
     {StageKind::Shear, "shear"},
     {StageKind::Done, "done"},
+    {StageKind::ConstantVolume, "constant_volume"},
+    {StageKind::ConstantP, "constant_p"},
+    {StageKind::StressPath, "stress_path"},
 }};
 
 } // namespace
+
+bool isTestStage(StageKind kind) {
+    return kind == StageKind::Shear || kind == StageKind::ConstantVolume ||
+           kind == StageKind::ConstantP || kind == StageKind::StressPath;
+}
 
 std::string stageKindName(StageKind kind) {
     for (const auto& [k, name] : kNames) {

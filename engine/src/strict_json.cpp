@@ -264,6 +264,26 @@ JsonSection JsonSection::child(const std::string& key, std::vector<std::string> 
     return JsonSection(file_, at(key), path(key), std::move(known));
 }
 
+std::vector<JsonSection> JsonSection::objects(const std::string& key,
+                                              const std::vector<std::string>& known) const {
+    std::vector<JsonSection> out;
+    if (!has(key)) {
+        return out;
+    }
+    const Json& value = at(key);
+    if (value.is_array()) {
+        if (value.empty()) {
+            refuse(key, value, "an object or a non-empty array of objects");
+        }
+        for (std::size_t k = 0; k < value.size(); ++k) {
+            out.emplace_back(file_, value[k], fmt::format("{}[{}]", path(key), k), known);
+        }
+        return out;
+    }
+    out.emplace_back(file_, value, path(key), known);
+    return out;
+}
+
 void JsonSection::refuseUnknown(const std::string& key) const {
     std::string nearest;
     std::size_t best = std::max<std::size_t>(2, key.size() / 3) + 1;

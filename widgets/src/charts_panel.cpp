@@ -281,7 +281,7 @@ void ChartsPanel::showPage(const QString& page) {
 
 QString ChartsPanel::pageOfStage(StageKind kind) const {
     for (const ChartDefinition& d : definitions_) {
-        if (d.stage == kind) {
+        if (d.stage == (isTestStage(kind) ? StageKind::Shear : kind)) {
             return d.page;
         }
     }
@@ -320,8 +320,13 @@ void ChartsPanel::setSeries(const std::vector<SeriesTable>& tables) {
             }
             std::vector<std::size_t>& rows = rowsOf[d.stage];
             for (std::size_t r = 0; r < table.rows.size(); ++r) {
-                const bool inStage = r < table.stageKinds.size() &&
-                                     stageKindFromName(table.stageKinds[r]) == d.stage;
+                const std::optional<StageKind> kind =
+                    r < table.stageKinds.size() ? stageKindFromName(table.stageKinds[r])
+                                                : std::nullopt;
+                // The test charts (stage Shear) draw every test kind's rows.
+                const bool inStage =
+                    kind && (*kind == d.stage ||
+                             (d.stage == StageKind::Shear && isTestStage(*kind)));
                 if (!shearOnly_ || inStage) {
                     rows.push_back(r);
                 }

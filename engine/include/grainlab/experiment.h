@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "grainlab/assembly.h"
+#include "grainlab/loading_path.h"
 #include "grainlab/simulation_state.h"
 
 namespace grainlab {
@@ -55,6 +56,9 @@ struct ExperimentConfig {
     CompactionSpec compaction;
     ShearSpec shear;
     RecordSpec record;
+    /// The tests each sheared sample gets, in order, each from the re-equilibrated sample (the
+    /// "test" key: one object or a list). One drained test when the file names none.
+    std::vector<LoadingPath> tests{LoadingPath{}};
 };
 
 } // namespace grainlab

@@ -56,6 +56,12 @@ const char* loadingKindName(LoadingPath::Kind kind);
 /// keys). Absent: a drained test, exactly the behaviour of a file without it. Refuses unknown
 /// keys, keys of another kind, and values out of range, naming the file, the key and the range.
 LoadingPath readLoadingPath(const JsonSection& experiment);
+/// Reads "test" as one object or a list of them (the tests each sample gets, in order); one
+/// drained test when absent. Refuses two tests of one name (testSuffix()).
+std::vector<LoadingPath> readLoadingPaths(const JsonSection& experiment);
+/// What a test adds to its sample's series name ("p015kPa"): "" for the drained test,
+/// "-constant-volume", "-constant-p", "-path-0.5" (a stress path of slope -0.5), "-cyclic", ...
+std::string testSuffix(const LoadingPath& path);
 
 /// The triangular eps1 waveform of a strain-controlled cyclic test, on the grid of a constant
 /// strain per step d: from eps0 to the upper peak mean + amplitude, then between the peaks. Peaks

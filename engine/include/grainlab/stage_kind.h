@@ -15,9 +15,18 @@ enum class StageKind {
     Equilibration = 1, ///< a sample at rest again under the test's friction, before its test
     Shear = 2,         ///< the drained biaxial shear test
     Done = 3,          ///< the run is finished
+    ConstantVolume = 4, ///< axis 1 strained, the cell's area held (the undrained analogue)
+    ConstantP = 5,      ///< axis 1 strained, sigma22 servoed to keep p
+    StressPath = 6,     ///< axis 1 strained, sigma22 servoed along a linear path in sigma11
 };
 
-/// "compaction", "equilibration", "shear" or "done" (the run file's checkpoint kind).
+/// True for the kinds that are a test of a sample (its eps1 is the test's axial strain): the
+/// drained shear test and the other loading paths.
+bool isTestStage(StageKind kind);
+
+/// "compaction", "equilibration", "shear", "done", "constant_volume", "constant_p" or
+/// "stress_path" (the run file's checkpoint kind; a test's kind is the name its experiment file
+/// gives it, "shear" for the drained test).
 std::string stageKindName(StageKind kind);
 /// The kind of a name stageKindName() gives; nullopt for any other text.
 std::optional<StageKind> stageKindFromName(const std::string& name);

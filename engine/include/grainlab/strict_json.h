@@ -108,6 +108,10 @@ public:
     /// A nested object; absent gives an empty section (all defaults) unless required.
     JsonSection child(const std::string& key, std::vector<std::string> known, bool required,
                       const std::string& requiredWhat = "an object") const;
+    /// `key` as one object or a non-empty array of objects: a section for each (paths
+    /// "key" or "key[i]"); empty when absent.
+    std::vector<JsonSection> objects(const std::string& key,
+                                     const std::vector<std::string>& known) const;
 
 private:
     [[noreturn]] void refuseUnknown(const std::string& key) const;

@@ -1,19 +1,31 @@
 #include "grainlab/shear_metrics.h"
 
 #include <cmath>
+
 #include <fmt/format.h>
+
+#include "grainlab/stage_kind.h"
 
 namespace grainlab {
 namespace {
 
-/// Rows of the shear stage: by each row's stage kind (the runner and the run file record it);
-/// a table without them (read from CSV) by the stage name, "shear <pressure>".
+/// True for a stage kind's name that is a test's (isTestStage).
+bool isTestName(const std::string& kind) {
+    const std::optional<StageKind> k = stageKindFromName(kind);
+    return k && isTestStage(*k);
+}
+
+/// Rows of the test (drained shear or another loading path): by each row's stage kind (the
+/// runner and the run file record it); a table without them (read from CSV) by the stage name,
+/// "<kind> <pressure>" ("shear 15 kPa", "constant_volume 15 kPa").
 std::vector<std::size_t> shearRows(const SeriesTable& t) {
     const bool identified = t.stageKinds.size() == t.rows.size();
     std::vector<std::size_t> rows;
     for (std::size_t k = 0; k < t.rows.size(); ++k) {
-        const bool shear = identified ? t.stageKinds[k] == "shear"
-                                      : k < t.stages.size() && t.stages[k].rfind("shear", 0) == 0;
+        const bool shear =
+            identified ? isTestName(t.stageKinds[k])
+                       : k < t.stages.size() && isTestName(t.stages[k].substr(
+                                                    0, t.stages[k].find(' ')));
         if (shear) {
             rows.push_back(k);
         }

@@ -44,7 +44,8 @@ struct ChartDefinition {
     double xScale = 1.0; ///< display factor of x
     QString yLabel;      ///< with unit
     std::vector<ChartCurve> curves;
-    /// The rows drawn: those of stages of this kind (the series' stage_kind).
+    /// The rows drawn: those of stages of this kind (the series' stage_kind); Shear: of every
+    /// test kind (isTestStage).
     StageKind stage = StageKind::Shear;
     /// The page the chart is on (charts of one page share a grid).
     QString page = QObject::tr("Shear tests");

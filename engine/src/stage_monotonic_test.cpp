@@ -1,4 +1,4 @@
-#include "stage_drained_shear.h"
+#include "stage_monotonic_test.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -12,11 +12,27 @@
 
 namespace grainlab {
 
-std::string DrainedShearStage::test() const {
-    return testName(pressure());
+AxisControl MonotonicTestStage::lateralControl(const RunContext& ctx) const {
+    switch (kind()) {
+    case StageKind::ConstantVolume: {
+        AxisControl c{AxisMode::ConstantArea};
+        c.referenceArea = ctx.sim->cellArea();
+        return c;
+    }
+    case StageKind::ConstantP:
+    case StageKind::StressPath: {
+        AxisControl c{AxisMode::StressPath};
+        c.targetStress = pressure();
+        c.pathSlope = kind() == StageKind::ConstantP ? -1.0 : ctx.config.tests[testIndex()].slope;
+        c.pathOrigin = ctx.sim->stress().s11;
+        return c;
+    }
+    default:
+        return {AxisMode::Stress, 0.0, pressure()};
+    }
 }
 
-void DrainedShearStage::start(RunContext& ctx) {
+void MonotonicTestStage::start(RunContext& ctx) {
     const ExperimentConfig& config = ctx.config;
     ctx.stageStartStep = ctx.sim->stepCount();
     ctx.setStrainReference();
@@ -25,7 +41,7 @@ void DrainedShearStage::start(RunContext& ctx) {
     const double dt = config.parameters.timeStep;
     ctx.sim->setAxisControl(
         0, {AxisMode::Strain, config.shear.axialStrainPerStep / dt, 0.0, ctx.length1At0});
-    ctx.sim->setAxisControl(1, {AxisMode::Stress, 0.0, pressure()});
+    ctx.sim->setAxisControl(1, lateralControl(ctx));
     // Events fall on whole steps counted from the start of shear (each step adds the same
     // engineering strain), so they do not depend on how advance() is chunked.
     ctx.nextRecordStep = ctx.stageStartStep;
@@ -39,17 +55,17 @@ void DrainedShearStage::start(RunContext& ctx) {
     ctx.checkpoint(ctx.checkpointLabel());
 }
 
-std::int64_t DrainedShearStage::endStep(const RunContext& ctx) const {
+std::int64_t MonotonicTestStage::endStep(const RunContext& ctx) const {
     return ctx.stageStartStep + ctx.strideOf(ctx.config.shear.targetAxialStrain);
 }
 
-std::int64_t DrainedShearStage::stepsToNextEvent(const RunContext& ctx) const {
+std::int64_t MonotonicTestStage::stepsToNextEvent(const RunContext& ctx) const {
     const std::int64_t now = ctx.sim->stepCount();
     return std::max<std::int64_t>(
         1, std::min({ctx.nextRecordStep, ctx.nextSnapshotStep, endStep(ctx)}) - now);
 }
 
-bool DrainedShearStage::handleEvents(RunContext& ctx) {
+bool MonotonicTestStage::handleEvents(RunContext& ctx) {
     const std::int64_t now = ctx.sim->stepCount();
     const bool end = now >= endStep(ctx);
     if (now >= ctx.nextRecordStep || end) {
@@ -64,12 +80,12 @@ bool DrainedShearStage::handleEvents(RunContext& ctx) {
     return end;
 }
 
-void DrainedShearStage::finish(RunContext& ctx) {
+void MonotonicTestStage::finish(RunContext& ctx) {
     peakCheckpoint(ctx);
     peak_ = RunningPeak{};
 }
 
-double DrainedShearStage::initialVoidCount(const MeasureSet& measures) {
+double MonotonicTestStage::initialVoidCount(const MeasureSet& measures) {
     if (voidsAtStart_ < 0) {
         voidsAtStart_ = measures.voidCells.voidCount;
     }
@@ -78,7 +94,7 @@ double DrainedShearStage::initialVoidCount(const MeasureSet& measures) {
 
 /// At a record, before a checkpoint of the same step: a new maximum of q/p keeps a copy of the
 /// state. The first of equal maxima is the peak.
-void DrainedShearStage::trackPeak(RunContext& ctx) {
+void MonotonicTestStage::trackPeak(RunContext& ctx) {
     if (!ctx.output) {
         return; // only the peak checkpoint needs it
     }
@@ -98,7 +114,7 @@ void DrainedShearStage::trackPeak(RunContext& ctx) {
 /// The checkpoint at the peak of q/p of the test that is ending, marked as such. It is for
 /// reading and viewing, not for continuing: it has no runner state (a resumed run starts from
 /// the last checkpoint that is not a peak).
-void DrainedShearStage::peakCheckpoint(RunContext& ctx) {
+void MonotonicTestStage::peakCheckpoint(RunContext& ctx) {
     if (!ctx.output || !peak_.active) {
         return;
     }
@@ -124,7 +140,7 @@ void DrainedShearStage::peakCheckpoint(RunContext& ctx) {
     ctx.output->checkpoint(data);
 }
 
-void DrainedShearStage::addToCheckpoint(CheckpointData& data) {
+void MonotonicTestStage::addToCheckpoint(CheckpointData& data) {
     if (peak_.active && peak_.at.step != data.state->step && peak_.at.keptIn.empty()) {
         // The first checkpoint since the peak's record keeps its state (named in the runner
         // state, so written before it is made).
@@ -133,7 +149,7 @@ void DrainedShearStage::addToCheckpoint(CheckpointData& data) {
     }
 }
 
-void DrainedShearStage::save(RunnerState& state, const RunContext& ctx) const {
+void MonotonicTestStage::save(RunnerState& state, const RunContext& ctx) const {
     state.voidsAtStart = voidsAtStart_;
     state.peak.reset();
     if (peak_.active) {
@@ -147,7 +163,7 @@ void DrainedShearStage::save(RunnerState& state, const RunContext& ctx) const {
 
 /// The running peak of a resumed run: from the runner state, with the state kept in the
 /// checkpoint it names (`kept`), or the resumed state itself when the peak was at its step.
-void DrainedShearStage::restore(const RunnerState& state, const RunContext& ctx,
+void MonotonicTestStage::restore(const RunnerState& state, const RunContext& ctx,
                                 const SimulationState& resumed,
                                 std::optional<SimulationState> kept) {
     voidsAtStart_ = state.voidsAtStart;
@@ -179,7 +195,7 @@ void DrainedShearStage::restore(const RunnerState& state, const RunContext& ctx,
     peak_.state.parameters.threads = threadsFor(ctx.config);
 }
 
-StageShare DrainedShearStage::share(const ExperimentConfig& config) const {
+StageShare MonotonicTestStage::share(const ExperimentConfig& config) const {
     return {double(strideOf(config, config.shear.targetAxialStrain)), false};
 }
 

@@ -1,8 +1,13 @@
 #pragma once
-// The drained biaxial shear test at one confining pressure (shear.pressures[index]), after the
-// sample's re-equilibration: axis 1 shortened at a constant engineering strain per step
-// (shear.axial_strain_per_step), axis 2 servoed to the pressure. It has finished at
-// shear.target_axial_strain. Events fall on whole steps counted from its start: a record every
+// A test that strains axis 1 monotonically, after the sample's re-equilibration: axis 1
+// shortened at a constant engineering strain per step (shear.axial_strain_per_step) to
+// shear.target_axial_strain, axis 2 following the test's path (its stage kind):
+//  - Shear, the drained biaxial test: sigma22 servoed to the confining pressure;
+//  - ConstantVolume: the cell's area held at its value at the start (exactly, AxisMode
+//    ConstantArea), the undrained analogue;
+//  - StressPath: sigma22 servoed to P + a (sigma11 - sigma11_0) (AxisMode StressPath), P the
+//    confining pressure and sigma11_0 the axial stress at the start; ConstantP is a = -1,
+//    which keeps p = (sigma11 + sigma22) / 2 at (P + sigma11_0) / 2. Events fall on whole steps counted from its start: a record every
 // record.strain_interval of eps1, a checkpoint every record.snapshot_strain_interval.
 //
 // It records N_vi at its start (the reference of the void-count columns) and tracks the running
@@ -17,10 +22,9 @@
 
 namespace grainlab {
 
-class DrainedShearStage final : public Stage {
+class MonotonicTestStage final : public Stage {
 public:
     using Stage::Stage;
-    std::string test() const override;
     bool isTest() const override { return true; }
     void start(RunContext& ctx) override;
     std::int64_t stepsToNextEvent(const RunContext& ctx) const override;
@@ -47,6 +51,8 @@ private:
         SimulationState state; ///< at that record
     };
 
+    /// Axis 2's control for the test's path, from the state at its start.
+    AxisControl lateralControl(const RunContext& ctx) const;
     std::int64_t endStep(const RunContext& ctx) const;
     void trackPeak(RunContext& ctx);
     void peakCheckpoint(RunContext& ctx);
