@@ -222,5 +222,33 @@ TEST(AxisPaths, PathControlsRoundTripThroughACheckpointAndContinueBitForBit) {
     std::filesystem::remove_all(dir);
 }
 
+TEST(AxisPaths, PathControlsGiveTheSameBitsOnOneAndTwoThreads) {
+    // The path controls act on the cell between the parallel force loops: two engine threads
+    // give the states of one, bit for bit, for constant area and for a stress path.
+    for (const AxisMode mode : {AxisMode::ConstantArea, AxisMode::StressPath}) {
+        std::vector<SimulationState> ends;
+        for (int threads : {1, 2}) {
+            SimulationState start = compacted(1e5);
+            start.parameters.threads = threads;
+            Simulation sim(start);
+            sim.setFriction(0.5);
+            AxisControl lateral{};
+            lateral.mode = mode;
+            lateral.referenceArea = sim.cellArea();
+            lateral.targetStress = sim.stress().s22;
+            lateral.pathSlope = -1.0;
+            lateral.pathOrigin = sim.stress().s11;
+            sim.setAxisControl(1, lateral);
+            sim.setAxisControl(0, axialStrainControl(5e-7, sim.state().parameters.timeStep,
+                                                     sim.state().cell[0]));
+            sim.advance(3000);
+            ends.push_back(sim.state());
+        }
+        EXPECT_EQ(ends[0].grains.x1, ends[1].grains.x1) << int(mode);
+        EXPECT_EQ(ends[0].grains.theta, ends[1].grains.theta) << int(mode);
+        EXPECT_EQ(ends[0].cell, ends[1].cell) << int(mode);
+    }
+}
+
 } // namespace
 } // namespace grainlab

@@ -170,6 +170,36 @@ TEST(ExperimentFile, UnknownKeysAreRefusedWithASuggestion) {
     expectRefused(j, "colour", {"unknown key colour", "seed"}); // lists the allowed keys
 }
 
+TEST(ExperimentFile, TheTestKeyHoldsOneTestOrAList) {
+    Json j = minimalExperiment();
+    EXPECT_EQ(parseExperimentText(j.dump(), "a.json").tests.size(), 1u); // drained
+    EXPECT_EQ(parseExperimentText(j.dump(), "a.json").tests[0].kind, LoadingPath::Kind::Drained);
+    j["test"] = Json::parse(R"({"kind": "constant_volume"})");
+    const ExperimentConfig one = parseExperimentText(j.dump(), "a.json");
+    ASSERT_EQ(one.tests.size(), 1u);
+    EXPECT_EQ(one.tests[0].kind, LoadingPath::Kind::ConstantVolume);
+    j["test"] = Json::parse(R"([{"kind": "drained"}, {"kind": "stress_path", "slope": -0.5},
+                                {"kind": "stress_path", "slope": 0.5}])");
+    const ExperimentConfig three = parseExperimentText(j.dump(), "a.json");
+    ASSERT_EQ(three.tests.size(), 3u);
+    EXPECT_EQ(testSuffix(three.tests[1]), "-path-0.5");
+    EXPECT_EQ(testSuffix(three.tests[2]), "-path+0.5");
+
+    j["test"] = Json::array();
+    expectRefused(j, "test", {"test = []", "an object or a non-empty array of objects"});
+    j["test"] = Json::parse(R"([{"kind": "constant_p"}, {"kind": "constant_p"}])");
+    expectRefused(j, "test[1].kind", {"a second test of the same kind"});
+    j["test"] = Json::parse(R"([{"kind": "drained"}, {"kind": "stress_path"}])");
+    expectRefused(j, "test[1].slope", {"missing required key test[1].slope", "[-10, 10]"});
+    j["test"] = Json::parse(R"([{"kind": "drained"}, 3])");
+    expectRefused(j, "test[1]", {"test[1] = 3: must be an object"});
+    // Kinds the runner does not play yet are refused, not run as something else.
+    j["test"] = Json::parse(R"({"kind": "cyclic", "amplitude": 0.01})");
+    expectRefused(j, "test.kind", {"\"cyclic\": not available", "constant_volume"});
+    j["test"] = Json::parse(R"([{"kind": "drained"}, {"kind": "probes"}])");
+    expectRefused(j, "test[1].kind", {"\"probes\": not available"});
+}
+
 TEST(ExperimentFile, DuplicateKeysAreRefused) {
     const std::string text = R"({"seed": 1, "grains": {"count": 10, "count": 20}})";
     try {
