@@ -265,6 +265,9 @@ int runReportCommand(const ReportCommandOptions& options) {
             writeFileAtomically((figureFolder / (f.name + ".csv")).string(), figureCsv(f));
         }
         writeFileAtomically((out / "headline.csv").string(), headlineCsv(headline, pooled));
+        const CriticalStateSummary criticalState = criticalStateOf(loaded.runs);
+        writeFileAtomically((out / "critical_state.csv").string(),
+                            criticalStateCsv(criticalState));
         if (options.figures) {
             if (const std::string error =
                     options.figures(figureFolder.string(), figures, loaded.sources);
@@ -273,7 +276,9 @@ int runReportCommand(const ReportCommandOptions& options) {
                 return 1;
             }
         }
-        const ReportPage page{figures, headline, pooled, loaded.sources, figureFolder.string()};
+        const ReportPage page{figures,        headline,
+                              pooled,         loaded.sources,
+                              figureFolder.string(), &criticalState};
         writeFileAtomically((out / "report.md").string(), reportMarkdown(page));
         writeFileAtomically((out / "report.html").string(), reportHtml(page));
         if (!options.quiet) {

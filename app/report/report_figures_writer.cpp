@@ -77,7 +77,7 @@ ui::PlotPainter plotOf(const ReportFigure& f) {
         fit.x = {lo * f.xScale, hi * f.xScale};
         fit.y = {(f.fit->slope * lo + f.fit->intercept) * f.yScale,
                  (f.fit->slope * hi + f.fit->intercept) * f.yScale};
-        fit.label = q(fitEquation(*f.fit));
+        fit.label = q(f.fitLabel.empty() ? fitEquation(*f.fit) : f.fitLabel);
         fit.colour = QColor(30, 30, 30);
         fit.width = 2.0;
         plot.curves.push_back(std::move(fit));

@@ -1,5 +1,6 @@
 #include "report/report_page.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -62,6 +63,19 @@ int digitsOf(const std::string& unit, const std::string& key) {
     return 3;
 }
 
+/// "25 kPa" for a drained test, "25 kPa constant volume" for another kind (its series name
+/// after the sample's, "p025kPa-constant-volume").
+std::string testColumnLabel(const HeadlineValue& v) {
+    std::string label = fmt::format("{:g} kPa", v.pressure / 1e3);
+    const std::size_t dash = v.test.find('-');
+    if (dash != std::string::npos) {
+        std::string kind = v.test.substr(dash + 1);
+        std::replace(kind.begin(), kind.end(), '-', ' ');
+        label += " " + kind;
+    }
+    return label;
+}
+
 struct Table {
     std::vector<std::string> header;
     std::vector<std::vector<std::string>> rows;
@@ -72,7 +86,7 @@ Table headlineRows(const ReportPage& page) {
     t.header.push_back("number");
     if (!page.headline.empty()) {
         for (const HeadlineValue& v : page.headline.front().values) {
-            t.header.push_back(fmt::format("{:g} kPa", v.pressure / 1e3));
+            t.header.push_back(testColumnLabel(v));
         }
     }
     t.header.push_back("published");
@@ -86,7 +100,7 @@ Table headlineRows(const ReportPage& page) {
             r.push_back(withScatter(v.value, digits));
             if (row.published) {
                 comparison += (comparison.empty() ? "" : "; ") +
-                              fmt::format("{:g} kPa: {}", v.pressure / 1e3,
+                              fmt::format("{}: {}", testColumnLabel(v),
                                           comparisonText(v.value, *row.published, digits));
             }
         }
@@ -138,7 +152,7 @@ std::string pooledText(const PooledFitScatter& p) {
 std::string figureCaption(const ReportFigure& f) {
     std::string c = f.title;
     if (f.fit) {
-        c += ": " + fitEquation(*f.fit) + " (pooled fit)";
+        c += ": " + (f.fitLabel.empty() ? fitEquation(*f.fit) + " (pooled fit)" : f.fitLabel);
     }
     if (!f.note.empty()) {
         c += " — " + f.note;
@@ -169,6 +183,63 @@ std::vector<std::pair<std::string, std::string>> pageFigures(const ReportPage& p
 }
 
 } // namespace
+
+std::string criticalStateText(const CriticalStateSummary& cs) {
+    const SteadyStateCriterion& c = cs.criterion;
+    std::string text = fmt::format(
+        "A test's end counts as steady when, over its last {:g} of axial strain, the least-squares "
+        "slopes obey |dq/dε1| / p < {:g} and |dεv/dε1| < {:g}: {} of {} test ends are steady "
+        "(critical_state.csv lists every end, with the reason when it is not).",
+        c.window, c.maxStressSlope, c.maxVolumeSlope, cs.steadyCount(), cs.ends.size());
+    if (cs.m.count == 0) {
+        return text + " No steady end: no critical state stress ratio or line.";
+    }
+    text += fmt::format(" M = q/p at the steady ends: {} ({} ends)", withScatter(cs.m, 3),
+                        cs.m.count);
+    if (cs.mDrained.count > 0 && cs.mConstantVolume.count > 0) {
+        text += fmt::format("; drained {} ({}), constant volume {} ({})",
+                            withScatter(cs.mDrained, 3), cs.mDrained.count,
+                            withScatter(cs.mConstantVolume, 3), cs.mConstantVolume.count);
+        if (cs.mDrained.count >= 2 && cs.mConstantVolume.count >= 2) {
+            // The difference of two means against its standard error.
+            const double se = std::sqrt(cs.mDrained.sd * cs.mDrained.sd / cs.mDrained.count +
+                                        cs.mConstantVolume.sd * cs.mConstantVolume.sd /
+                                            cs.mConstantVolume.count);
+            const double d = cs.mDrained.mean - cs.mConstantVolume.mean;
+            text += fmt::format(": they differ by {:.3f}, {} twice the standard error of the "
+                                "difference ({:.3f})",
+                                d, std::fabs(d) <= 2.0 * se ? "within" : "beyond", 2.0 * se);
+        }
+    }
+    text += ".";
+    if (cs.line) {
+        text += fmt::format(" Critical state line through the steady ends: {} (R² = {:.3f}, {} "
+                            "points).",
+                            cs.line->equation(), cs.line->rSquared, cs.line->points);
+    } else {
+        text += " No critical state line: it needs steady ends at two different p′.";
+    }
+    return text;
+}
+
+std::string criticalStateCsv(const CriticalStateSummary& cs) {
+    std::string out = "run,test,kind,pressure [Pa],steady,reason,q [Pa],p [Pa],e [-],"
+                      "q_over_p [-],stress_slope [-],volume_slope [-]\n";
+    const auto quoted = [](std::string s) {
+        std::string q = "\"";
+        for (char ch : s) {
+            q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+        }
+        return q + "\"";
+    };
+    for (const TestEndState& e : cs.ends) {
+        out += fmt::format("{},{},{},{:.9g},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n",
+                           quoted(e.run), e.test, e.kind, e.pressure,
+                           e.steady.steady ? "yes" : "no", quoted(e.steady.reason), e.q, e.p,
+                           e.e, e.stressRatio, e.steady.stressSlope, e.steady.volumeSlope);
+    }
+    return out;
+}
 
 std::string fitEquation(const LinearFit& fit) {
     return fmt::format("Z̄ = {:.2f} N_v/N_vi {} {:.2f} (R² = {:.3f}, {} records)", fit.slope,
@@ -247,6 +318,10 @@ std::string reportMarkdown(const ReportPage& page) {
     }
     md += "\n";
     md += pooledText(page.pooled); // appended, not "\n" + …: GCC 12 warns falsely (-Wrestrict)
+    if (page.criticalState) {
+        md += "\n\n## Critical state\n\n";
+        md += criticalStateText(*page.criticalState);
+    }
     md += "\n\n## Figures\n\n";
     const std::string folder = fs::path(page.figureFolder).filename().string();
     for (const auto& [stem, caption] : pageFigures(page)) {
@@ -287,7 +362,12 @@ std::string reportHtml(const ReportPage& page) {
         }
         h += "</tr>\n";
     }
-    h += "</table>\n<p>" + htmlEscape(pooledText(page.pooled)) + "</p>\n<h2>Figures</h2>\n";
+    h += "</table>\n<p>" + htmlEscape(pooledText(page.pooled)) + "</p>\n";
+    if (page.criticalState) {
+        h += "<h2>Critical state</h2>\n<p>" + htmlEscape(criticalStateText(*page.criticalState)) +
+             "</p>\n";
+    }
+    h += "<h2>Figures</h2>\n";
     for (const auto& [stem, caption] : pageFigures(page)) {
         const fs::path png = fs::path(page.figureFolder) / (stem + ".png");
         h += "<figure>";

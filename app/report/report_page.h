@@ -18,7 +18,14 @@ struct ReportPage {
     const PooledFitScatter& pooled;
     const std::vector<ReportSource>& sources;
     std::string figureFolder; ///< where the figures' files are (PNG embedded when present)
+    const CriticalStateSummary* criticalState = nullptr; ///< its section, when given
 };
+
+/// The critical state section's text: steady tests, M with its scatter (drained and constant
+/// volume apart, and whether they agree within it), the critical state line.
+std::string criticalStateText(const CriticalStateSummary& cs);
+/// One line per test end of every run (critical_state.csv).
+std::string criticalStateCsv(const CriticalStateSummary& cs);
 
 std::string reportMarkdown(const ReportPage& page);
 std::string reportHtml(const ReportPage& page);

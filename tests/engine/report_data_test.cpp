@@ -1,5 +1,6 @@
 // The numbers behind the report's figures and table, against hand computations on series whose
 // curves are known in closed form.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -202,6 +203,131 @@ TEST(HeadlineTable, NumbersCarryTheirScatterAndFaceThePublishedValues) {
     EXPECT_FALSE(compare(Scatter{0.41, 0.01, 2}, *iuf.published).beyondScatter);
     // One run has no scatter: any difference lies beyond it.
     EXPECT_TRUE(compare(Scatter{0.127, 0.0, 1}, *e.published).beyondScatter);
+}
+
+/// A test of kind `kind` ("shear", "constant_volume") from eps1 = 0 to 0.12 in 60 records: p, q,
+/// e and eps_v ramp to (pEnd, qEnd, eEnd, -0.02) by eps1 = 0.04 and stay there, or, with
+/// `hardening`, q keeps growing by 5 p per unit eps1.
+SeriesTable endingTest(const std::string& name, const std::string& kind, double pEnd,
+                       double qEnd, double eEnd, bool hardening = false) {
+    test::SeriesBuilder b(name);
+    for (int k = 0; k <= 60; ++k) {
+        const double eps1 = 0.12 * k / 60;
+        const double ramp = std::min(1.0, eps1 / 0.04);
+        auto& r = b.row(kind + " 15 kPa");
+        b.t.stageKinds.push_back(kind);
+        b.at(r, "eps1") = eps1;
+        b.at(r, "p") = pEnd;
+        b.at(r, "q") = hardening ? qEnd + 5.0 * pEnd * (eps1 - 0.12) : ramp * qEnd;
+        b.at(r, "e") = eEnd;
+        b.at(r, "epsv") = kind == "constant_volume" ? 0.0 : -0.02 * ramp;
+        b.at(r, "q_over_p") = b.at(r, "q") / pEnd;
+    }
+    return b.t;
+}
+
+TEST(CriticalStateOfRuns, MAndTheLineComeFromTheSteadyEndsOnly) {
+    // Two runs; per run a steady drained and a steady constant-volume test at 15 kPa, a drained
+    // test at 100 kPa still hardening, a steady constant-volume test at 100 kPa.
+    std::vector<ReportRun> runs;
+    std::vector<double> ratios, drainedRatios, cvRatios, lnP, e;
+    for (int s = 0; s < 2; ++s) {
+        ReportRun run;
+        run.name = "seed" + std::to_string(s + 1);
+        const auto add = [&](const std::string& name, const std::string& kind, double pressure,
+                             double p, double ratio, double voids, bool hardening) {
+            run.tests.push_back(endingTest(name, kind, p, ratio * p, voids, hardening));
+            run.pressures.push_back(pressure);
+            if (!hardening) {
+                ratios.push_back(ratio);
+                (kind == "constant_volume" ? cvRatios : drainedRatios).push_back(ratio);
+                lnP.push_back(std::log(p));
+                e.push_back(voids);
+            }
+        };
+        add("p015kPa", "shear", 15e3, 15e3, 0.55 + 0.01 * s, 0.20 + 0.002 * s, false);
+        add("p015kPa-constant-volume", "constant_volume", 15e3, 40e3 + 1e3 * s, 0.53 + 0.02 * s,
+            0.18, false);
+        add("p100kPa", "shear", 100e3, 100e3, 0.3, 0.17, true);
+        add("p100kPa-constant-volume", "constant_volume", 100e3, 250e3 + 5e3 * s,
+            0.56 - 0.01 * s, 0.15 - 0.001 * s, false);
+        runs.push_back(std::move(run));
+    }
+    const CriticalStateSummary cs = criticalStateOf(runs);
+    ASSERT_EQ(cs.ends.size(), 8u);
+    EXPECT_EQ(cs.steadyCount(), 6);
+    for (const TestEndState& end : cs.ends) {
+        EXPECT_EQ(end.steady.steady, end.test != "p100kPa") << end.run << " " << end.test;
+        if (end.test == "p100kPa") {
+            EXPECT_NE(end.steady.reason.find("dq/deps1"), std::string::npos) << end.steady.reason;
+        }
+        EXPECT_EQ(end.kind, end.test.find("constant") == std::string::npos ? "shear"
+                                                                           : "constant_volume");
+    }
+    // M by hand: mean and sample standard deviation of the steady ends' q/p.
+    const auto meanSd = [](const std::vector<double>& v) {
+        double m = 0, ss = 0;
+        for (double x : v) {
+            m += x;
+        }
+        m /= double(v.size());
+        for (double x : v) {
+            ss += (x - m) * (x - m);
+        }
+        return std::pair{m, std::sqrt(ss / double(v.size() - 1))};
+    };
+    EXPECT_NEAR(cs.m.mean, meanSd(ratios).first, 1e-12);
+    EXPECT_NEAR(cs.m.sd, meanSd(ratios).second, 1e-12);
+    EXPECT_EQ(cs.m.count, 6);
+    EXPECT_NEAR(cs.mDrained.mean, meanSd(drainedRatios).first, 1e-12);
+    EXPECT_EQ(cs.mDrained.count, 2);
+    EXPECT_NEAR(cs.mConstantVolume.mean, meanSd(cvRatios).first, 1e-12);
+    EXPECT_EQ(cs.mConstantVolume.count, 4);
+    // The line by hand: least squares of e on ln p over the six steady ends.
+    double mx = 0, my = 0;
+    for (std::size_t k = 0; k < lnP.size(); ++k) {
+        mx += lnP[k] / double(lnP.size());
+        my += e[k] / double(e.size());
+    }
+    double sxy = 0, sxx = 0;
+    for (std::size_t k = 0; k < lnP.size(); ++k) {
+        sxy += (lnP[k] - mx) * (e[k] - my);
+        sxx += (lnP[k] - mx) * (lnP[k] - mx);
+    }
+    ASSERT_TRUE(cs.line.has_value());
+    EXPECT_NEAR(cs.line->lambda, -sxy / sxx, 1e-12);
+    EXPECT_NEAR(cs.line->eGamma, my - sxy / sxx * mx, 1e-10);
+    EXPECT_EQ(cs.line->points, 6u);
+
+    // The report's figures 9: the paths with q = M p', the steady ends with the line.
+    const auto figures = reportFigures(runs);
+    const ReportFigure& paths = figure(figures, "09_q_vs_p");
+    EXPECT_EQ(paths.lines.size(), 4u);
+    ASSERT_TRUE(paths.fit.has_value());
+    EXPECT_NEAR(paths.fit->slope, cs.m.mean, 1e-12);
+    EXPECT_EQ(paths.fit->intercept, 0.0);
+    EXPECT_EQ(paths.xLabel, "p′ [kPa]");
+    EXPECT_EQ(paths.yLabel, "q [kPa]");
+    const ReportFigure& ends = figure(figures, "09_e_vs_ln_p");
+    EXPECT_EQ(ends.lines.size(), 3u); // the steady tests
+    ASSERT_TRUE(ends.fit.has_value());
+    EXPECT_NEAR(ends.fit->slope, -cs.line->lambda, 1e-12);
+    EXPECT_NE(ends.fitLabel.find(cs.line->equation()), std::string::npos);
+    for (const ReportLine& l : ends.lines) {
+        ASSERT_EQ(l.x.size(), 1u);
+        EXPECT_EQ(l.runs[0], 2);
+    }
+    EXPECT_EQ(ends.lines[1].label, "15 kPa constant volume");
+
+    // With no steady end there is no M, no line and no e - ln p' figure.
+    std::vector<ReportRun> hardening(1);
+    hardening[0].tests = {endingTest("p015kPa", "shear", 15e3, 5e3, 0.2, true)};
+    hardening[0].pressures = {15e3};
+    EXPECT_EQ(criticalStateOf(hardening).m.count, 0);
+    EXPECT_FALSE(criticalStateOf(hardening).line.has_value());
+    for (const ReportFigure& f : reportFigures(hardening)) {
+        EXPECT_NE(f.name, "09_e_vs_ln_p");
+    }
 }
 
 } // namespace

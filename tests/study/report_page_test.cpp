@@ -1,5 +1,6 @@
 // The report page's comparison with the published values: a bound is judged against the seed
 // scatter only when there is one (two runs or more).
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,39 @@ TEST(ReportPage, ABoundIsJudgedAgainstTheSeedScatterOnlyWhenThereIsOne) {
     EXPECT_NE(md.find("15 kPa: above the bound, beyond the scatter"), std::string::npos) << md;
     md = pageWith({{"p015kPa", 15e3, Scatter{0.412, 0.01, 3}}});
     EXPECT_NE(md.find("15 kPa: above the bound, within the scatter"), std::string::npos) << md;
+}
+
+TEST(ReportPage, TheCriticalStateSectionSaysWhetherDrainedAndUndrainedMAgree) {
+    CriticalStateSummary cs;
+    cs.ends.resize(5);
+    for (int k = 0; k < 4; ++k) {
+        cs.ends[std::size_t(k)].steady.steady = true;
+    }
+    cs.m = {0.55, 0.02, 4};
+    cs.mDrained = {0.56, 0.015, 2};
+    cs.mConstantVolume = {0.54, 0.01, 2};
+    // Standard error of the difference: sqrt(0.015²/2 + 0.01²/2) = 0.0127; 0.02 is within twice.
+    std::string text = criticalStateText(cs);
+    EXPECT_NE(text.find("4 of 5 test ends are steady"), std::string::npos) << text;
+    EXPECT_NE(text.find("M = q/p at the steady ends: 0.550 ± 0.020 (4 ends)"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find("differ by 0.020, within twice the standard error of the difference "
+                        "(0.025)"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("No critical state line"), std::string::npos) << text;
+    cs.mConstantVolume = {0.50, 0.01, 2};
+    text = criticalStateText(cs);
+    EXPECT_NE(text.find("differ by 0.060, beyond"), std::string::npos) << text;
+    cs.line = CriticalStateLine{0.8, 0.05, 0.97, 4};
+    EXPECT_NE(criticalStateText(cs).find(cs.line->equation() + " (R² = 0.970, 4 points)"),
+              std::string::npos);
+    cs.m = {};
+    EXPECT_NE(criticalStateText(cs).find("No steady end"), std::string::npos);
+    // The CSV: one line per end, its header naming the units.
+    const std::string csv = criticalStateCsv(cs);
+    EXPECT_EQ(csv.substr(0, 30), "run,test,kind,pressure [Pa],st");
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 6);
 }
 
 } // namespace

@@ -95,9 +95,24 @@ std::vector<int> onGrid(const CurveBand& band, const std::vector<double>& grid) 
 }
 
 /// An empty line of test `key`, labelled with its pressure.
+/// "25 kPa" for the drained test of a sample, "25 kPa constant volume" for another kind (its
+/// series name after the sample's: "p025kPa-constant-volume").
+std::string testLabel(const TestKey& key) {
+    const std::size_t dash = key.test.find('-');
+    if (dash == std::string::npos) {
+        return pressureLabel(key.pressure);
+    }
+    std::string kind = key.test.substr(dash + 1);
+    if (kind.rfind("path", 0) == 0) {
+        return fmt::format("{} stress path, slope {}", pressureLabel(key.pressure), kind.substr(4));
+    }
+    std::replace(kind.begin(), kind.end(), '-', ' ');
+    return pressureLabel(key.pressure) + " " + kind;
+}
+
 ReportLine lineOf(const TestKey& key) {
     ReportLine line;
-    line.label = pressureLabel(key.pressure);
+    line.label = testLabel(key);
     line.test = key.test;
     line.pressure = key.pressure;
     return line;
@@ -188,8 +203,13 @@ ReportLine dilatancyLine(const std::vector<ReportRun>& runs, const TestKey& key,
 ReportFigure figureOf(std::string name, std::string title, const std::string& xColumn,
                       const std::string& yColumn) {
     const AxisLabel x = axisLabelOf(xColumn), y = axisLabelOf(yColumn);
-    ReportFigure f{
-        std::move(name), std::move(title), xColumn, x.text, yColumn, y.text, {}, std::nullopt, ""};
+    ReportFigure f;
+    f.name = std::move(name);
+    f.title = std::move(title);
+    f.xColumn = xColumn;
+    f.xLabel = x.text;
+    f.yColumn = yColumn;
+    f.yLabel = y.text;
     f.xScale = x.scale;
     f.yScale = y.scale;
     return f;
@@ -271,6 +291,58 @@ std::optional<LinearFit> fitLine(const std::vector<double>& x, const std::vector
     return fit;
 }
 
+int CriticalStateSummary::steadyCount() const {
+    return int(std::count_if(ends.begin(), ends.end(),
+                             [](const TestEndState& e) { return e.steady.steady; }));
+}
+
+CriticalStateSummary criticalStateOf(const std::vector<ReportRun>& runs,
+                                     const SteadyStateCriterion& criterion) {
+    CriticalStateSummary out;
+    out.criterion = criterion;
+    std::vector<double> all, drained, constantVolume, lineP, lineE;
+    for (const ReportRun& run : runs) {
+        for (std::size_t t = 0; t < run.tests.size(); ++t) {
+            const SeriesTable& table = run.tests[t];
+            const Curve q = shearCurve(table, "q"), p = shearCurve(table, "p");
+            const Curve epsv = shearCurve(table, "epsv"), e = shearCurve(table, "e");
+            if (q.y.empty()) {
+                continue;
+            }
+            TestEndState end;
+            end.run = run.name;
+            end.test = table.test;
+            end.pressure = t < run.pressures.size() ? run.pressures[t] : 0.0;
+            const std::vector<std::size_t> rows = shearRows(table);
+            end.kind = table.stageKinds.size() == table.rows.size()
+                           ? table.stageKinds[rows.back()]
+                           : table.stages[rows.back()].substr(0, table.stages[rows.back()].find(' '));
+            end.steady = steadyState(q.x, q.y, p.y, epsv.y, criterion);
+            end.q = q.y.back();
+            end.p = p.y.back();
+            end.e = e.y.back();
+            end.stressRatio = end.p > 0 ? end.q / end.p : 0.0;
+            if (end.steady.steady) {
+                all.push_back(end.stressRatio);
+                (end.kind == "constant_volume" ? constantVolume : drained)
+                    .push_back(end.stressRatio);
+                lineP.push_back(end.p);
+                lineE.push_back(end.e);
+            }
+            out.ends.push_back(std::move(end));
+        }
+    }
+    out.m = scatterOf(all);
+    out.mDrained = scatterOf(drained);
+    out.mConstantVolume = scatterOf(constantVolume);
+    try {
+        out.line = fitCriticalStateLine(lineP, lineE);
+    } catch (const std::invalid_argument&) {
+        // fewer than two steady ends of distinct p': no line
+    }
+    return out;
+}
+
 std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
                                         const ReportOptions& options) {
     const std::vector<TestKey> keys = testsOf(runs);
@@ -283,15 +355,10 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
 
     // 2. phi at the peak of q/p against the confining pressure.
     {
-        ReportFigure f{"02_phi_peak",
-                       "Friction angle at the peak",
-                       "pressure",
-                       "confining pressure [kPa]",
-                       "phi_deg",
-                       "φ at the peak [°]",
-                       {},
-                       {},
-                       ""};
+        ReportFigure f = figureOf("02_phi_peak", "Friction angle at the peak", "pressure",
+                                  "phi_deg");
+        f.xLabel = "confining pressure [kPa]"; // the points' x is in kPa already
+        f.yLabel = "φ at the peak [°]";
         ReportLine line;
         line.label = "mean ± 1σ over runs";
         line.points = true;
@@ -396,6 +463,64 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
                 f.lines.push_back(std::move(line));
             }
         }
+        add(std::move(f));
+    }
+
+    // 9. The critical state: q against p' of every test with the line q = M p' through the
+    // steady ends, and the steady ends in the e - ln p' plane with the critical state line.
+    const CriticalStateSummary cs = criticalStateOf(runs);
+    {
+        ReportFigure f = figureOf("09_q_vs_p", "Stress paths in the q − p′ plane", "p", "q");
+        f.xLabel = "p′ [kPa]";
+        for (const TestKey& key : keys) {
+            ReportLine line = parametricLine(runs, key, "p", "q", options);
+            if (!line.x.empty()) {
+                f.lines.push_back(std::move(line));
+            }
+        }
+        if (cs.m.count > 0) {
+            f.fit = LinearFit{cs.m.mean, 0.0, 0.0, std::size_t(cs.m.count)};
+            f.fitLabel = fmt::format("critical state q = M p′, M = {:.3f} ± {:.3f} ({} steady "
+                                     "tests)",
+                                     cs.m.mean, cs.m.sd, cs.m.count);
+        }
+        f.note = fmt::format("a test is steady when, over its last {:g} of ε1, |dq/dε1| / p < {:g} "
+                             "and |dεv/dε1| < {:g}: {} of {} test ends are",
+                             cs.criterion.window, cs.criterion.maxStressSlope,
+                             cs.criterion.maxVolumeSlope, cs.steadyCount(), cs.ends.size());
+        add(std::move(f));
+    }
+    if (cs.steadyCount() > 0) {
+        ReportFigure f = figureOf("09_e_vs_ln_p", "Steady ends in the e − ln p′ plane", "ln_p",
+                                  "e");
+        f.xLabel = "ln(p′ / 1 Pa)";
+        for (const TestKey& key : keys) {
+            std::vector<double> lnP, e;
+            for (const TestEndState& end : cs.ends) {
+                if (end.test == key.test && end.steady.steady) {
+                    lnP.push_back(std::log(end.p));
+                    e.push_back(end.e);
+                }
+            }
+            if (lnP.empty()) {
+                continue;
+            }
+            ReportLine line = lineOf(key);
+            line.points = true;
+            const Scatter x = scatterOf(lnP), y = scatterOf(e);
+            line.x = {x.mean};
+            line.xSd = {x.sd};
+            line.y = {y.mean};
+            line.sd = {y.sd};
+            line.runs = {y.count};
+            f.lines.push_back(std::move(line));
+        }
+        if (cs.line) {
+            f.fit = LinearFit{-cs.line->lambda, cs.line->eGamma, cs.line->rSquared,
+                              cs.line->points};
+            f.fitLabel = fmt::format("{} (R² = {:.3f})", cs.line->equation(), cs.line->rSquared);
+        }
+        f.note = "each point: a test's steady end, mean ± 1σ over the runs";
         add(std::move(f));
     }
     return figures;

@@ -15,24 +15,6 @@ bool isTestName(const std::string& kind) {
     return k && isTestStage(*k);
 }
 
-/// Rows of the test (drained shear or another loading path): by each row's stage kind (the
-/// runner and the run file record it); a table without them (read from CSV) by the stage name,
-/// "<kind> <pressure>" ("shear 15 kPa", "constant_volume 15 kPa").
-std::vector<std::size_t> shearRows(const SeriesTable& t) {
-    const bool identified = t.stageKinds.size() == t.rows.size();
-    std::vector<std::size_t> rows;
-    for (std::size_t k = 0; k < t.rows.size(); ++k) {
-        const bool shear =
-            identified ? isTestName(t.stageKinds[k])
-                       : k < t.stages.size() && isTestName(t.stages[k].substr(
-                                                    0, t.stages[k].find(' ')));
-        if (shear) {
-            rows.push_back(k);
-        }
-    }
-    return rows;
-}
-
 /// Column `name` at row k, or nothing when the table has no such column.
 std::optional<double> cell(const SeriesTable& t, int column, std::size_t k) {
     if (column < 0) {
@@ -57,6 +39,22 @@ std::optional<double> valueAtStrain(const Curve& curve, double strain) {
 }
 
 } // namespace
+
+std::vector<std::size_t> shearRows(const SeriesTable& t) {
+    const bool identified = t.stageKinds.size() == t.rows.size();
+    std::vector<std::size_t> rows;
+    for (std::size_t k = 0; k < t.rows.size(); ++k) {
+        const bool shear =
+            identified ? isTestName(t.stageKinds[k])
+                       : k < t.stages.size() && isTestName(t.stages[k].substr(
+                                                    0, t.stages[k].find(' ')));
+        if (shear) {
+            rows.push_back(k);
+        }
+    }
+    return rows;
+}
+
 
 Curve shearCurve(const SeriesTable& test, const std::string& column) {
     Curve c;

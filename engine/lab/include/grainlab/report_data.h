@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "grainlab/critical_state.h"
 #include "grainlab/series.h"
 #include "grainlab/statistics.h"
 
@@ -58,6 +59,7 @@ struct ReportFigure {
     std::string note;             ///< a sentence for the report (e.g. the smoothing window)
     double xScale = 1.0; ///< drawn value = stored value * scale (100: a strain in percent)
     double yScale = 1.0;
+    std::string fitLabel; ///< the fit line's legend; "" for its equation (fitEquation)
 };
 
 /// How the figures sample the curves.
@@ -65,6 +67,30 @@ struct ReportOptions {
     int gridPoints = 201;       ///< points of the common eps1 axis
     double dilatancyWindow = 0.005; ///< the eps1 window of the smoothed dilatancy index [-]
 };
+
+/// The end of one test of one run, as the critical state reads it.
+struct TestEndState {
+    std::string run;       ///< ReportRun::name
+    std::string test;      ///< e.g. "p025kPa-constant-volume"
+    std::string kind;      ///< its test rows' stage kind: "shear" (drained), "constant_volume", ...
+    double pressure = 0;   ///< the confining pressure of its sample [Pa]
+    SteadyStateResult steady;
+    double q = 0, p = 0, e = 0; ///< at its last record [Pa, Pa, -]
+    double stressRatio = 0;     ///< q/p there [-]
+};
+
+/// The critical state of the runs' tests: every test's end, M = q/p at the end over the steady
+/// ones (all of them, the drained and the constant-volume ones apart), and the critical state
+/// line through the steady ends in the e - ln p' plane (when two of them differ in p').
+struct CriticalStateSummary {
+    SteadyStateCriterion criterion;
+    std::vector<TestEndState> ends;
+    Scatter m, mDrained, mConstantVolume;
+    std::optional<CriticalStateLine> line;
+    int steadyCount() const;
+};
+CriticalStateSummary criticalStateOf(const std::vector<ReportRun>& runs,
+                                     const SteadyStateCriterion& criterion = {});
 
 /// The figures of the reference study, in the report's order (1 to 8 of docs/report.md;
 /// figure 5, the void-cell pictures, is drawn from checkpoints and is not part of this list).

@@ -44,6 +44,11 @@ struct ShearMetrics {
 /// test does not reach (it was sheared less far, or has no shear rows) are left empty.
 ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure);
 
+/// The rows of the test (the drained shear or another loading path): by each row's stage kind
+/// (the runner and the run file record it); a table without them (read from CSV) by the stage
+/// name, "<kind> <pressure>" ("shear 15 kPa", "constant_volume 15 kPa").
+std::vector<std::size_t> shearRows(const SeriesTable& test);
+
 /// A column of the shear rows as a curve against eps1 (e.g. "q_over_p", "epsv").
 Curve shearCurve(const SeriesTable& test, const std::string& column);
 
