@@ -31,7 +31,7 @@ TEST(ChartsPanel, OverlaysTestsInTheirColoursInDisplayUnits) {
     const std::vector<SeriesTable> tables{testing::makeSeries("p15kPa", 200, 0.5),
                                           testing::makeSeries("p100kPa", 150, 0.4)};
     panel.setSeries(tables);
-    ASSERT_EQ(panel.chartCount(), 10); // six of the shear tests, four of the compaction
+    ASSERT_EQ(panel.chartCount(), 12); // six of the shear tests, two stress paths, four compaction
     const int q = chartIndex(panel, QStringLiteral("q_over_p"));
     const int v = chartIndex(panel, QStringLiteral("epsv"));
     const int f = chartIndex(panel, QStringLiteral("fabric"));
@@ -63,6 +63,38 @@ TEST(ChartsPanel, OverlaysTestsInTheirColoursInDisplayUnits) {
     EXPECT_EQ(panel.chartView(q)->chart()->series().size(), 1);
 }
 
+TEST(ChartsPanel, StressPathsOfEveryTestKindInQAgainstPAndEAgainstLnP) {
+    // A constant-volume test's rows: p' moves, e does not; drawn in kPa and against ln p'.
+    SeriesTable t;
+    t.test = "p025kPa-constant-volume";
+    for (const char* column : {"eps1", "p", "q", "e"}) {
+        t.columns.push_back({column, "-"});
+    }
+    for (int k = 0; k < 20; ++k) {
+        t.rows.push_back({0.001 * k, 25e3 + 2e3 * k, 1.5e3 * k, 0.16});
+        t.stages.push_back("constant_volume 25 kPa");
+        t.stageKinds.push_back("constant_volume");
+    }
+    ChartsPanel panel;
+    panel.resize(900, 900);
+    panel.setSeries({t});
+    const int qp = chartIndex(panel, QStringLiteral("q_vs_p"));
+    const int ep = chartIndex(panel, QStringLiteral("e_vs_ln_p"));
+    ASSERT_GE(qp, 0);
+    ASSERT_GE(ep, 0);
+    EXPECT_EQ(panel.definition(qp).page, QStringLiteral("Stress paths"));
+    const auto path = panel.curvePoints(qp, t.test, "q");
+    ASSERT_EQ(path.size(), 20);
+    EXPECT_DOUBLE_EQ(path.back().x(), 1e-3 * (25e3 + 2e3 * 19));
+    EXPECT_DOUBLE_EQ(path.back().y(), 1e-3 * 1.5e3 * 19);
+    const auto ends = panel.curvePoints(ep, t.test, "e");
+    ASSERT_EQ(ends.size(), 20);
+    EXPECT_DOUBLE_EQ(ends.front().x(), std::log(25e3));
+    EXPECT_DOUBLE_EQ(ends.back().y(), 0.16);
+    // A test of another kind is charted on the shear page too, and its stage leads there.
+    EXPECT_EQ(panel.pageOfStage(StageKind::ConstantVolume), QStringLiteral("Shear tests"));
+}
+
 TEST(ChartsPanel, ShearOnlySkipsCompactionRows) {
     ChartsPanel panel;
     SeriesTable t = testing::makeSeries("p50kPa", 10, 0.5);
@@ -82,7 +114,8 @@ TEST(ChartsPanel, ChartsTheCompactionAgainstStepOnItsOwnPage) {
     const SeriesTable compaction = testing::makeCompactionSeries(40);
     panel.setSeries({compaction, testing::makeSeries("p015kPa", 50, 0.5)});
     ASSERT_EQ(panel.pages(),
-              (QStringList{QStringLiteral("Shear tests"), QStringLiteral("Compaction")}));
+              (QStringList{QStringLiteral("Shear tests"), QStringLiteral("Stress paths"),
+                           QStringLiteral("Compaction")}));
     EXPECT_EQ(panel.pageOfStage(StageKind::Compaction), QStringLiteral("Compaction"));
     EXPECT_EQ(panel.pageOfStage(StageKind::Shear), QStringLiteral("Shear tests"));
     EXPECT_EQ(panel.pageOfStage(StageKind::Equilibration), QString());

@@ -50,14 +50,16 @@ inline SeriesTable makeSeries(const std::string& name, int rows, double peak) {
     SeriesTable t;
     t.test = name;
     for (const char* column :
-         {"eps1", "epsv", "q_over_p", "Hdev", "Hsdev", "Hwdev", "Z", "Z_eff", "S", "Nv_over_Nvi"}) {
+         {"eps1", "epsv", "q_over_p", "Hdev", "Hsdev", "Hwdev", "Z", "Z_eff", "S", "Nv_over_Nvi",
+          "p", "q", "e"}) {
         t.columns.push_back({column, "-"});
     }
     for (int k = 0; k < rows; ++k) {
         const double e = 0.15 * k / std::max(1, rows - 1);
         const double q = peak * (1.0 - std::exp(-e / 0.01));
+        const double p = 20e3 * (1.0 + e);
         t.rows.push_back({e, 0.002 - 0.1 * e, q, 0.4 * q, 0.6 * q, 0.1 * q, 3.9 - 2 * e,
-                          4.1 - 3 * e, 0.2 * q, 1.0 - 2 * e});
+                          4.1 - 3 * e, 0.2 * q, 1.0 - 2 * e, p, q * p, 0.2 - 0.1 * e});
         t.stages.push_back("shear " + name);
         t.stageKinds.push_back("shear");
     }

@@ -23,6 +23,7 @@ namespace grainlab::ui {
 std::vector<ChartDefinition> defaultChartDefinitions() {
     const QString eps1 = QStringLiteral("ε1 [%]");
     const QString compaction = QObject::tr("Compaction");
+    const QString paths = QObject::tr("Stress paths");
     return {
         {"q_over_p",
          QObject::tr("Stress ratio"),
@@ -70,6 +71,25 @@ std::vector<ChartDefinition> defaultChartDefinitions() {
          1.0,
          QStringLiteral("Z̄ [-]"),
          {{"Z_eff", QStringLiteral("Z̄"), 1.0, Qt::SolidLine}}},
+        {"q_vs_p",
+         QObject::tr("Stress path: q against p′"),
+         "p",
+         QStringLiteral("p′ [kPa]"),
+         1e-3,
+         QStringLiteral("q [kPa]"),
+         {{"q", QStringLiteral("q"), 1e-3, Qt::SolidLine}},
+         StageKind::Shear,
+         paths},
+        {"e_vs_ln_p",
+         QObject::tr("Void ratio against ln p′"),
+         "p",
+         QStringLiteral("ln(p′ / 1 Pa)"),
+         1.0,
+         QStringLiteral("e [-]"),
+         {{"e", QStringLiteral("e"), 1.0, Qt::SolidLine}},
+         StageKind::Shear,
+         paths,
+         true},
         {"compaction_p",
          QObject::tr("Compaction: mean stress"),
          "step",
@@ -372,7 +392,11 @@ void ChartsPanel::setSeries(const std::vector<SeriesTable>& tables) {
                 QList<QPointF> points;
                 points.reserve(static_cast<qsizetype>(rows.size()));
                 for (std::size_t r : rows) {
-                    const double x = table.rows[r][xc] * d.xScale, y = table.rows[r][yc] * c.scale;
+                    double x = table.rows[r][xc] * d.xScale;
+                    if (d.xLogarithm) {
+                        x = x > 0.0 ? std::log(x) : std::numeric_limits<double>::quiet_NaN();
+                    }
+                    const double y = table.rows[r][yc] * c.scale;
                     if (std::isfinite(x) && std::isfinite(y)) {
                         points.append(QPointF(x, y));
                     }

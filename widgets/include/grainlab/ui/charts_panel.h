@@ -49,6 +49,8 @@ struct ChartDefinition {
     StageKind stage = StageKind::Shear;
     /// The page the chart is on (charts of one page share a grid).
     QString page = QObject::tr("Shear tests");
+    /// x drawn as ln(xScale * value) (a value <= 0 is left out), e.g. ln(p′ / 1 Pa).
+    bool xLogarithm = false;
 };
 
 /// The charts in display order: the six of the shear tests, then the four of the compaction.
