@@ -13,10 +13,23 @@ namespace {
 
 using OrderedJson = nlohmann::ordered_json; // keeps the file's key order
 
+/// The tests the panel edits (kind and slope) are the same.
+bool sameTests(const ExperimentConfig& a, const ExperimentConfig& b) {
+    if (a.tests.size() != b.tests.size()) {
+        return false;
+    }
+    for (std::size_t k = 0; k < a.tests.size(); ++k) {
+        if (a.tests[k].kind != b.tests[k].kind || a.tests[k].slope != b.tests[k].slope) {
+            return false;
+        }
+    }
+    return true;
+}
+
 bool sameEditedKeys(const ExperimentConfig& a, const ExperimentConfig& b) {
     return a.assembly.grainCount == b.assembly.grainCount &&
            a.shear.pressures == b.shear.pressures && a.shear.friction == b.shear.friction &&
-           a.shear.targetAxialStrain == b.shear.targetAxialStrain;
+           a.shear.targetAxialStrain == b.shear.targetAxialStrain && sameTests(a, b);
 }
 
 } // namespace
@@ -40,6 +53,19 @@ std::string editedExperimentText(const ExperimentConfig& base, const ExperimentC
     shear["pressures"] = edited.shear.pressures;
     shear["friction"] = edited.shear.friction;
     shear["target_axial_strain"] = edited.shear.targetAxialStrain;
+    if (!sameTests(base, edited)) {
+        // The panel edits one test (a list of several is kept as the file has it).
+        const LoadingPath& t = edited.tests.front();
+        if (t.kind == LoadingPath::Kind::Drained) {
+            j.erase("test"); // the drained test is a file without one, the same bits
+        } else {
+            OrderedJson test{{"kind", loadingKindName(t.kind)}};
+            if (t.kind == LoadingPath::Kind::StressPath) {
+                test["slope"] = t.slope;
+            }
+            j["test"] = test;
+        }
+    }
     // nlohmann writes doubles in the shortest form that reads back to the same bits.
     return j.dump(2) + "\n";
 }

@@ -2,10 +2,14 @@
 // and one series.csv per test) under the runs folder, never over another run, holding the
 // experiment as edited in the Parameters tab; Stop leaves it resumable; Save experiment as…
 // writes that same experiment text, which the experiment-file reader reads back.
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include <QDir>
+#include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QImage>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -19,7 +23,9 @@
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/run_file.h"
+#include "grainlab/ui/charts_panel.h"
 #include "grainlab/ui/parameters_panel.h"
+#include "grainlab/ui/scene_view.h"
 #include "gui/main_window.h"
 #include "window_test_support.h"
 
@@ -198,6 +204,86 @@ TEST(WindowRun, SaveExperimentAsWritesWhatTheRunRecords) {
     EXPECT_EQ(w.editedExperimentText().toStdString(), readWholeFile(saved.toStdString()));
     // The next run goes to a dated folder under the runs folder again.
     EXPECT_TRUE(w.runFolderLabel()->text().contains(QDir::toNativeSeparators(picked)));
+}
+
+TEST(WindowRun, AConstantVolumeTestChosenInTheParametersRunsAndDrawsItsStressPath) {
+    const QString runs = freshFolder(QStringLiteral("constant-volume"));
+    MainWindow w;
+    w.setRunsFolder(runs);
+    w.setExperiment(smallExperiment(0.004));
+    w.resize(1400, 900);
+    w.show();
+    ParametersPanel* p = w.parametersPanel();
+    // The slope is for a stress path only.
+    EXPECT_FALSE(p->pathSlopeEdit()->isEnabled());
+    p->testKindEdit()->setCurrentIndex(
+        p->testKindEdit()->findData(QStringLiteral("stress_path")));
+    EXPECT_TRUE(p->pathSlopeEdit()->isEnabled());
+    p->pathSlopeEdit()->setValue(-0.5);
+    EXPECT_NE(w.editedExperimentText().toStdString().find("\"slope\": -0.5"), std::string::npos)
+        << w.editedExperimentText().toStdString();
+    p->testKindEdit()->setCurrentIndex(
+        p->testKindEdit()->findData(QStringLiteral("constant_volume")));
+    EXPECT_FALSE(p->pathSlopeEdit()->isEnabled());
+    ASSERT_TRUE(p->valid());
+    ASSERT_EQ(p->applied().tests.size(), 1u);
+    EXPECT_EQ(p->applied().tests[0].kind, LoadingPath::Kind::ConstantVolume);
+    // What Save experiment as… writes reads back as the constant-volume test.
+    const ExperimentConfig saved =
+        parseExperimentText(w.editedExperimentText().toStdString(), "saved.json");
+    ASSERT_EQ(saved.tests.size(), 1u);
+    EXPECT_EQ(saved.tests[0].kind, LoadingPath::Kind::ConstantVolume);
+
+    click(w, w.startAction());
+    ASSERT_TRUE(waitFor([&] { return state(w) == RunState::Finished; }, 120000))
+        << w.controller().status().error;
+    w.refresh();
+    const std::string test = "p015kPa-constant-volume";
+    ASSERT_FALSE(w.sceneView()->snapshot()->series.empty());
+    EXPECT_EQ(w.sceneView()->snapshot()->series.back().test, test);
+    // The run file records the test's rows under its kind, at constant volume.
+    const std::string runFile = QDir(w.runFolder()).filePath(QStringLiteral("run.h5")).toStdString();
+    const SeriesTable t = readSeries(runFile, test);
+    int rows = 0;
+    for (std::size_t k = 0; k < t.rows.size(); ++k) {
+        if (t.stageKinds[k] == "constant_volume") {
+            ++rows;
+            EXPECT_LE(std::fabs(t.rows[k][std::size_t(t.column("epsv"))]), 1e-12);
+        }
+    }
+    EXPECT_GE(rows, 10);
+
+    // The stress-path chart: its points, and its curve drawn in the test's colour (pixels).
+    ChartsPanel* charts = w.chartsPanel();
+    int chart = -1;
+    for (int k = 0; k < charts->chartCount(); ++k) {
+        if (charts->definition(k).name == QStringLiteral("q_vs_p")) {
+            chart = k;
+        }
+    }
+    ASSERT_GE(chart, 0);
+    EXPECT_EQ(charts->curvePoints(chart, test, "q").size(), rows);
+    charts->showPage(QStringLiteral("Stress paths"));
+    QTest::qWait(100);
+    const QImage image = charts->chartView(chart)->grab().toImage();
+    const QColor colour = charts->testColour(test);
+    // Inside the plot area only (the legend's swatch has the colour too).
+    const QRect plot = charts->chartView(chart)
+                           ->mapFromScene(charts->chartView(chart)->chart()->plotArea())
+                           .boundingRect()
+                           .intersected(image.rect());
+    ASSERT_FALSE(plot.isEmpty());
+    int coloured = 0;
+    for (int y = plot.top(); y <= plot.bottom(); ++y) {
+        for (int x = plot.left(); x <= plot.right(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            coloured += std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
+                            std::abs(c.blue() - colour.blue()) <
+                        30;
+        }
+    }
+    std::printf("stress path chart: %d pixels of the test colour\n", coloured);
+    EXPECT_GT(coloured, 50) << "the stress path is not drawn";
 }
 
 } // namespace

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <string>
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
+#include <QSignalBlocker>
 #include <QSpinBox>
 
 #include "grainlab/experiment_file.h"
@@ -18,7 +20,8 @@ namespace grainlab::ui {
 ParametersPanel::ParametersPanel(QWidget* parent)
     : QWidget(parent), compactionPressures_(new QLabel(this)), shearPressures_(new QLineEdit(this)),
       grains_(new QSpinBox(this)), friction_(new QDoubleSpinBox(this)),
-      strain_(new QDoubleSpinBox(this)), message_(new QLabel(this)) {
+      strain_(new QDoubleSpinBox(this)), testKind_(new QComboBox(this)),
+      slope_(new QDoubleSpinBox(this)), message_(new QLabel(this)) {
     auto* form = new QFormLayout(this);
     form->setContentsMargins(4, 4, 4, 4);
     compactionPressures_->setToolTip(tr("The experiment file's compaction stages, in kPa: the "
@@ -37,6 +40,13 @@ ParametersPanel::ParametersPanel(QWidget* parent)
     strain_->setDecimals(2);
     strain_->setSuffix(QStringLiteral(" %"));
     strain_->setToolTip(tr("Axial strain ε1 at which each shear test ends."));
+    testKind_->setToolTip(tr("What each sheared sample is tested by: axis 1 is shortened, axis 2 "
+                             "holds σ22 (drained), the cell's area (constant volume), p (constant "
+                             "p) or σ22 = P + a (σ11 − σ11,0) (stress path)."));
+    slope_->setRange(-10.0, 10.0);
+    slope_->setDecimals(3);
+    slope_->setSingleStep(0.1);
+    slope_->setToolTip(tr("The stress path's slope a = dσ22/dσ11 (0: drained, −1: constant p)."));
     message_->setWordWrap(true);
     message_->setStyleSheet(QStringLiteral("color: #b00020"));
     form->addRow(tr("Compaction pressures [kPa]"), compactionPressures_);
@@ -44,11 +54,15 @@ ParametersPanel::ParametersPanel(QWidget* parent)
     form->addRow(tr("Grains"), grains_);
     form->addRow(tr("Friction μ (shear)"), friction_);
     form->addRow(tr("Axial strain target ε1"), strain_);
+    form->addRow(tr("Test"), testKind_);
+    form->addRow(tr("Stress path slope a"), slope_);
     form->addRow(message_);
     connect(shearPressures_, &QLineEdit::textChanged, this, &ParametersPanel::check);
     connect(grains_, &QSpinBox::valueChanged, this, &ParametersPanel::check);
     connect(friction_, &QDoubleSpinBox::valueChanged, this, &ParametersPanel::check);
     connect(strain_, &QDoubleSpinBox::valueChanged, this, &ParametersPanel::check);
+    connect(testKind_, &QComboBox::currentIndexChanged, this, &ParametersPanel::check);
+    connect(slope_, &QDoubleSpinBox::valueChanged, this, &ParametersPanel::check);
 }
 
 void ParametersPanel::setExperiment(const ExperimentConfig& config) {
@@ -65,6 +79,27 @@ void ParametersPanel::setExperiment(const ExperimentConfig& config) {
     grains_->setValue(config.assembly.grainCount);
     friction_->setValue(config.shear.friction);
     strain_->setValue(100.0 * config.shear.targetAxialStrain);
+    {
+        const QSignalBlocker block(testKind_);
+        testKind_->clear();
+        if (config.tests.size() > 1) {
+            QStringList kinds;
+            for (const LoadingPath& t : config.tests) {
+                kinds << QString::fromLatin1(loadingKindName(t.kind));
+            }
+            testKind_->addItem(tr("as in the file: %1").arg(kinds.join(QStringLiteral(", "))),
+                               QString());
+        }
+        testKind_->addItem(tr("drained"), QStringLiteral("drained"));
+        testKind_->addItem(tr("constant volume"), QStringLiteral("constant_volume"));
+        testKind_->addItem(tr("constant p"), QStringLiteral("constant_p"));
+        testKind_->addItem(tr("stress path"), QStringLiteral("stress_path"));
+        if (config.tests.size() == 1) {
+            testKind_->setCurrentIndex(testKind_->findData(
+                QString::fromLatin1(loadingKindName(config.tests.front().kind))));
+        }
+    }
+    slope_->setValue(config.tests.size() == 1 ? config.tests.front().slope : 0.0);
     check();
 }
 
@@ -117,10 +152,23 @@ ExperimentConfig ParametersPanel::applied() const {
     c.assembly.grainCount = grains_->value();
     c.shear.friction = friction_->value();
     c.shear.targetAxialStrain = strain_->value() / 100.0;
+    const QString kind = testKind_->currentData().toString();
+    if (!kind.isEmpty()) {
+        LoadingPath test;
+        for (auto k : {LoadingPath::Kind::Drained, LoadingPath::Kind::ConstantVolume,
+                       LoadingPath::Kind::ConstantP, LoadingPath::Kind::StressPath}) {
+            if (kind == QString::fromLatin1(loadingKindName(k))) {
+                test.kind = k;
+            }
+        }
+        test.slope = test.kind == LoadingPath::Kind::StressPath ? slope_->value() : 0.0;
+        c.tests = {test};
+    }
     return c;
 }
 
 void ParametersPanel::check() {
+    slope_->setEnabled(testKind_->currentData().toString() == QStringLiteral("stress_path"));
     const QString why = problem();
     message_->setText(why);
     message_->setVisible(!why.isEmpty());

@@ -1,6 +1,8 @@
 #pragma once
 // The experiment's main parameters, editable before a run: which compacted samples are sheared,
-// grain count, friction during shear and the axial strain target. The compaction stages are
+// grain count, friction during shear, the axial strain target and the test each sample gets
+// (drained, constant volume, constant p or a linear stress path with its slope; a file that lists
+// several tests keeps its list unless another test is chosen). The compaction stages are
 // shown, not edited: the panel never changes the experiment behind the user (one pressure list
 // for both would turn "compact at 15, 25, 50, 100 kPa, shear at 100 kPa" into one compaction at
 // 100 kPa). Values are checked as they are typed, the shear list by the experiment file's own
@@ -14,6 +16,7 @@
 
 #include "grainlab/experiment.h"
 
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
@@ -41,6 +44,11 @@ public:
     QSpinBox* grainCountEdit() const { return grains_; }
     QDoubleSpinBox* frictionEdit() const { return friction_; }
     QDoubleSpinBox* strainTargetEdit() const { return strain_; }
+    /// The test's kind: "drained", "constant_volume", "constant_p", "stress_path" (item data),
+    /// and first "as in the file" when the file lists several tests.
+    QComboBox* testKindEdit() const { return testKind_; }
+    /// The stress path's slope a (enabled for a stress path only).
+    QDoubleSpinBox* pathSlopeEdit() const { return slope_; }
 
 signals:
     /// Any entry changed; `valid` tells whether the whole set is usable.
@@ -58,6 +66,8 @@ private:
     QSpinBox* grains_;
     QDoubleSpinBox* friction_;
     QDoubleSpinBox* strain_;
+    QComboBox* testKind_;
+    QDoubleSpinBox* slope_;
     QLabel* message_;
 };
 
