@@ -38,6 +38,8 @@ SeriesTable syntheticTest() {
         b.at(r, "Nv_over_Nvi") = 1 - e;
         b.at(r, "Hdev") = e;
         b.at(r, "e") = 0.2 + e;
+        b.at(r, "p") = 1e5 * (1 + e);
+        b.at(r, "q") = b.at(r, "q_over_p") * b.at(r, "p");
         // Energy: elastic +1 J, friction +2 J, damping +1 J over shear; kinetic unchanged.
         b.at(r, "E_kin") = 0.5;
         b.at(r, "E_elastic") = 3 + k / 12.0;
@@ -122,7 +124,7 @@ TEST(ShearMetrics, TheRowsStageKindDecidesWhatIsShearWhereTheTableHasIt) {
 TEST(ShearMetrics, NamedMetricsCarryEveryValueWithItsUnit) {
     const ShearMetrics m = shearMetrics(syntheticTest(), 1e5);
     const auto named = namedMetrics(m);
-    ASSERT_EQ(named.size(), 19u);
+    ASSERT_EQ(named.size(), 22u);
     EXPECT_EQ(named[0].name, "peak_q_over_p");
     EXPECT_DOUBLE_EQ(*named[0].value, 0.5);
     EXPECT_EQ(named[4].name, "q_over_p_at_5pc");
@@ -131,9 +133,40 @@ TEST(ShearMetrics, NamedMetricsCarryEveryValueWithItsUnit) {
     EXPECT_NEAR(*named[11].value, 3.95, 1e-14);
     EXPECT_EQ(named[17].name, "I_uf_mean");
     EXPECT_EQ(named[17].unit, "%");
+    EXPECT_EQ(named[19].name, "q_peak");
+    EXPECT_EQ(named[19].unit, "Pa");
+    EXPECT_EQ(named[21].name, "M_steady");
     for (const auto& n : named) {
-        EXPECT_TRUE(n.value) << n.name;
+        // Still dilating at its end (eps_v = -eps1 / 2): no steady end, no M.
+        EXPECT_EQ(n.value.has_value(), n.name != "M_steady") << n.name;
     }
+}
+
+TEST(ShearMetrics, PeakDeviatorAndTheStressRatioOfASteadyEnd) {
+    // q = q/p p with p = 1e5 (1 + eps1): the largest q is at 3 % (0.5 * 1.03e5 = 51500 Pa)...
+    SeriesTable t = syntheticTest();
+    ShearMetrics m = shearMetrics(t, 1e5);
+    EXPECT_DOUBLE_EQ(*m.peakDeviator, 0.5 * 1.03e5);
+    EXPECT_DOUBLE_EQ(*m.meanStressAtPeakDeviator, 1.03e5);
+    EXPECT_FALSE(m.criticalStressRatio.has_value());
+    // ... and with q, p and eps_v constant from 6 % on, the end is steady: M = q/p there.
+    for (std::size_t k = 0; k < t.rows.size(); ++k) {
+        auto& r = t.rows[k];
+        if (r[std::size_t(t.column("eps1"))] >= 0.06) {
+            r[std::size_t(t.column("p"))] = 2e5;
+            r[std::size_t(t.column("q"))] = 0.9e5;
+            r[std::size_t(t.column("epsv"))] = -0.03;
+        }
+    }
+    m = shearMetrics(t, 1e5);
+    ASSERT_TRUE(m.criticalStressRatio.has_value());
+    EXPECT_DOUBLE_EQ(*m.criticalStressRatio, 0.45);
+    // The lateral stress error is a drained test's: a constant-volume test has none.
+    EXPECT_TRUE(m.maxLateralStressError.has_value());
+    for (std::size_t k = 0; k < t.rows.size(); ++k) {
+        t.stageKinds.push_back(k == 0 ? "equilibration" : "constant_volume");
+    }
+    EXPECT_FALSE(shearMetrics(t, 1e5).maxLateralStressError.has_value());
 }
 
 } // namespace

@@ -51,6 +51,10 @@ SteadyStateResult steadyState(const std::vector<double>& eps1, const std::vector
         meanP += p[i];
     }
     meanP /= double(r.samples);
+    if (!(meanP > 0.0)) {
+        r.reason = "the mean stress p over the last window is not positive";
+        return r;
+    }
     r.stressSlope = slopeOf(e, qw) / meanP;
     r.volumeSlope = slopeOf(e, vw);
     if (!(std::fabs(r.stressSlope) < criterion.maxStressSlope)) {

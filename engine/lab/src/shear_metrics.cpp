@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "grainlab/critical_state.h"
 #include "grainlab/stage_kind.h"
 
 namespace grainlab {
@@ -106,13 +107,16 @@ ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
     m.voidCountRatioAt10 = valueAtStrain(shearCurve(test, "Nv_over_Nvi"), at10);
     m.fabricAt10 = valueAtStrain(shearCurve(test, "Hdev"), at10);
 
+    // Which kind of test the rows are: only a drained test holds sigma22 at the pressure.
+    const bool drained = test.stageKinds.size() != test.rows.size() ||
+                         test.stageKinds[rows.back()] == "shear";
     double maxDi = -INFINITY, maxError = 0, sumIuf = 0;
     for (std::size_t k : rows) {
         const auto& r = test.rows[k];
         if (di >= 0) {
             maxDi = std::max(maxDi, r[std::size_t(di)]);
         }
-        if (s22 >= 0 && confiningPressure > 0) {
+        if (s22 >= 0 && confiningPressure > 0 && drained) {
             maxError = std::max(maxError, std::abs(r[std::size_t(s22)] - confiningPressure) /
                                               confiningPressure);
         }
@@ -123,8 +127,26 @@ ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
     if (di >= 0) {
         m.maxDilatancy = maxDi;
     }
-    if (s22 >= 0 && confiningPressure > 0) {
+    if (s22 >= 0 && confiningPressure > 0 && drained) {
         m.maxLateralStressError = maxError;
+    }
+
+    const int qc = test.column("q"), pc = test.column("p");
+    if (qc >= 0 && pc >= 0) {
+        std::size_t peak = rows.front();
+        for (std::size_t k : rows) {
+            if (test.rows[k][std::size_t(qc)] > test.rows[peak][std::size_t(qc)]) {
+                peak = k;
+            }
+        }
+        m.peakDeviator = cell(test, qc, peak);
+        m.meanStressAtPeakDeviator = cell(test, pc, peak);
+        const Curve qCurve = shearCurve(test, "q"), pCurve = shearCurve(test, "p");
+        const Curve vCurve = shearCurve(test, "epsv");
+        if (vCurve.y.size() == qCurve.y.size() &&
+            steadyState(qCurve.x, qCurve.y, pCurve.y, vCurve.y).steady && pCurve.y.back() > 0) {
+            m.criticalStressRatio = qCurve.y.back() / pCurve.y.back();
+        }
     }
     if (iuf >= 0) {
         m.meanUnbalancedForce = sumIuf / double(rows.size());
@@ -170,6 +192,9 @@ std::vector<NamedMetric> namedMetrics(const ShearMetrics& m) {
     out.push_back({"lateral_stress_error_max", "-", m.maxLateralStressError});
     out.push_back({"I_uf_mean", "%", m.meanUnbalancedForce});
     out.push_back({"damping_work_fraction", "-", m.dampingWorkFraction});
+    out.push_back({"q_peak", "Pa", m.peakDeviator});
+    out.push_back({"p_at_q_peak", "Pa", m.meanStressAtPeakDeviator});
+    out.push_back({"M_steady", "-", m.criticalStressRatio});
     return out;
 }
 

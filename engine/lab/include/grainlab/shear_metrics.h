@@ -33,11 +33,18 @@ struct ShearMetrics {
     std::optional<double> effectiveCoordinationAt10; ///< Z_eff at eps1 = 10 % [-]
     std::optional<double> voidCountRatioAt10;        ///< N_v/N_vi at eps1 = 10 % [-]
     std::optional<double> fabricAt10;                ///< H11 - H22 at eps1 = 10 % [-]
-    std::optional<double> maxLateralStressError;     ///< max |sigma22 - p0| / p0 during shear [-]
+    /// max |sigma22 - p0| / p0 during a drained test (empty for other kinds, whose sigma22
+    /// follows their path) [-]
+    std::optional<double> maxLateralStressError;
     std::optional<double> meanUnbalancedForce;       ///< mean I_uf over the shear records [%]
     /// Work dissipated by damping during shear as a fraction of the boundary work, the latter
     /// taken from the energy balance: W_b = dE_kin + dE_elastic + dW_friction + dW_damping [-].
     std::optional<double> dampingWorkFraction;
+    std::optional<double> peakDeviator;            ///< largest q during the test [Pa]
+    std::optional<double> meanStressAtPeakDeviator; ///< p′ there [Pa]
+    /// q/p at the test's end when the end is steady (critical_state.h, default criterion): the
+    /// test's estimate of M; empty when it is not steady [-]
+    std::optional<double> criticalStressRatio;
 };
 
 /// The metrics of one test recorded at confining pressure `confiningPressure` [Pa]. Values the
