@@ -62,7 +62,9 @@ ui::PlotPainter plotOf(const ReportFigure& f) {
         ui::PlotCurve curve;
         curve.x = scaled(line.x, f.xScale);
         curve.y = scaled(line.y, f.yScale);
-        curve.band = scaled(line.sd, f.yScale);
+        if (f.bands) {
+            curve.band = scaled(line.sd, f.yScale);
+        }
         curve.label = q(line.label);
         curve.colour = c;
         plot.curves.push_back(std::move(curve));

@@ -308,6 +308,7 @@ TEST(CriticalStateOfRuns, MAndTheLineComeFromTheSteadyEndsOnly) {
     EXPECT_EQ(paths.fit->intercept, 0.0);
     EXPECT_EQ(paths.xLabel, "p′ [kPa]");
     EXPECT_EQ(paths.yLabel, "q [kPa]");
+    EXPECT_FALSE(paths.bands); // x moves too: a band of q alone would misstate the scatter
     const ReportFigure& ends = figure(figures, "09_e_vs_ln_p");
     EXPECT_EQ(ends.lines.size(), 3u); // the steady tests
     ASSERT_TRUE(ends.fit.has_value());

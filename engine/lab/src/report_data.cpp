@@ -472,6 +472,7 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
     {
         ReportFigure f = figureOf("09_q_vs_p", "Stress paths in the q − p′ plane", "p", "q");
         f.xLabel = "p′ [kPa]";
+        f.bands = false;
         for (const TestKey& key : keys) {
             ReportLine line = parametricLine(runs, key, "p", "q", options);
             if (!line.x.empty()) {

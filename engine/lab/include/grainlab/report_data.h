@@ -60,6 +60,9 @@ struct ReportFigure {
     double xScale = 1.0; ///< drawn value = stored value * scale (100: a strain in percent)
     double yScale = 1.0;
     std::string fitLabel; ///< the fit line's legend; "" for its equation (fitEquation)
+    /// Draw each line's ±1σ band of y (the CSV has the sd either way). Off for paths where
+    /// x moves too (q against p′): a band of y alone would misstate the scatter.
+    bool bands = true;
 };
 
 /// How the figures sample the curves.
