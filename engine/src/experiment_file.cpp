@@ -422,15 +422,29 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
     checkServoInterval(servo, config);
     config.tests = readLoadingPaths(top);
     for (std::size_t k = 0; k < config.tests.size(); ++k) {
-        const LoadingPath::Kind kind = config.tests[k].kind;
-        if (kind == LoadingPath::Kind::Cyclic || kind == LoadingPath::Kind::Probes) {
-            const std::string key = top.at("test").is_array() ? fmt::format("test[{}].kind", k)
-                                                               : std::string("test.kind");
+        const LoadingPath& t = config.tests[k];
+        const std::string at =
+            top.has("test") && top.at("test").is_array() ? fmt::format("test[{}].", k) : "test.";
+        if (t.kind == LoadingPath::Kind::Probes) {
             throw ExperimentFileError(
-                sourceName, key,
-                fmt::format("{} = \"{}\": not available in this version (available: drained, "
-                            "constant_volume, constant_p, stress_path)",
-                            key, loadingKindName(kind)));
+                sourceName, at + "kind",
+                fmt::format("{}kind = \"probes\": not available in this version (available: "
+                            "drained, constant_volume, constant_p, stress_path, cyclic)",
+                            at));
+        }
+        if (t.kind == LoadingPath::Kind::Cyclic && t.control == LoadingPath::Control::Stress) {
+            throw ExperimentFileError(sourceName, at + "control",
+                                      fmt::format("{}control = \"stress\": not available in "
+                                                  "this version (available: \"strain\")",
+                                                  at));
+        }
+        if (t.kind == LoadingPath::Kind::Cyclic &&
+            !(config.shear.axialStrainPerStep <= t.amplitude)) {
+            throw ExperimentFileError(
+                sourceName, at + "amplitude",
+                fmt::format("{}amplitude = {:g}: must be at least shear.axial_strain_per_step "
+                            "({:g}), the strain of one step",
+                            at, t.amplitude, config.shear.axialStrainPerStep));
         }
     }
     return config;

@@ -133,6 +133,12 @@ LoadingPath readTest(const JsonSection& t) {
             path.mean = t.number("mean", Range{}, 0.0);
         }
         path.cycles = t.integer("cycles", 1, 100000, 10);
+        if (t.has("stop_strain_amplitude") && path.control == LoadingPath::Control::Strain) {
+            t.fail("stop_strain_amplitude",
+                   fmt::format("{} applies to control \"stress\" only: under strain control the "
+                               "amplitude is imposed",
+                               t.path("stop_strain_amplitude")));
+        }
         if (t.has("stop_strain_amplitude")) {
             path.stopStrainAmplitude =
                 t.number("stop_strain_amplitude", openClosed(0.0, kMaxStrain), std::nullopt);

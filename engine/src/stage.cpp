@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "stage_compaction.h"
+#include "stage_cyclic.h"
 #include "stage_monotonic_test.h"
 #include "stage_equilibration.h"
 
@@ -21,6 +22,7 @@ StageKind stageKindOf(const LoadingPath& path) {
     case LoadingPath::Kind::StressPath:
         return StageKind::StressPath;
     case LoadingPath::Kind::Cyclic:
+        return StageKind::Cyclic;
     case LoadingPath::Kind::Probes:
         break;
     }
@@ -73,6 +75,8 @@ std::unique_ptr<Stage> makeStage(const PlannedStage& planned) {
     case StageKind::ConstantP:
     case StageKind::StressPath:
         return std::make_unique<MonotonicTestStage>(planned);
+    case StageKind::Cyclic:
+        return std::make_unique<CyclicStage>(planned);
     case StageKind::Done:
         break;
     }

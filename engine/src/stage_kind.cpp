@@ -8,7 +8,7 @@
 namespace grainlab {
 namespace {
 
-constexpr std::array<std::pair<StageKind, const char*>, 7> kNames{{
+constexpr std::array<std::pair<StageKind, const char*>, 8> kNames{{
     {StageKind::Compaction, "compaction"},
     {StageKind::Equilibration, "equilibration"},
     {StageKind::Shear, "shear"},
@@ -16,13 +16,15 @@ constexpr std::array<std::pair<StageKind, const char*>, 7> kNames{{
     {StageKind::ConstantVolume, "constant_volume"},
     {StageKind::ConstantP, "constant_p"},
     {StageKind::StressPath, "stress_path"},
+    {StageKind::Cyclic, "cyclic"},
 }};
 
 } // namespace
 
 bool isTestStage(StageKind kind) {
     return kind == StageKind::Shear || kind == StageKind::ConstantVolume ||
-           kind == StageKind::ConstantP || kind == StageKind::StressPath;
+           kind == StageKind::ConstantP || kind == StageKind::StressPath ||
+           kind == StageKind::Cyclic;
 }
 
 std::string stageKindName(StageKind kind) {

@@ -194,10 +194,15 @@ TEST(ExperimentFile, TheTestKeyHoldsOneTestOrAList) {
     j["test"] = Json::parse(R"([{"kind": "drained"}, 3])");
     expectRefused(j, "test[1]", {"test[1] = 3: must be an object"});
     // Kinds the runner does not play yet are refused, not run as something else.
-    j["test"] = Json::parse(R"({"kind": "cyclic", "amplitude": 0.01})");
-    expectRefused(j, "test.kind", {"\"cyclic\": not available", "constant_volume"});
+    j["test"] = Json::parse(R"({"kind": "cyclic", "control": "stress", "amplitude": 1e4})");
+    expectRefused(j, "test.control", {"\"stress\": not available", "\"strain\""});
     j["test"] = Json::parse(R"([{"kind": "drained"}, {"kind": "probes"}])");
-    expectRefused(j, "test[1].kind", {"\"probes\": not available"});
+    expectRefused(j, "test[1].kind", {"\"probes\": not available", "cyclic"});
+    // A strain cycle shorter than one step of strain has no waveform.
+    j["shear"]["axial_strain_per_step"] = 1e-5;
+    j["shear"]["max_strain_rate"] = 100;
+    j["test"] = Json::parse(R"({"kind": "cyclic", "amplitude": 5e-6})");
+    expectRefused(j, "test.amplitude", {"test.amplitude = 5e-06", "shear.axial_strain_per_step"});
 }
 
 TEST(ExperimentFile, DuplicateKeysAreRefused) {

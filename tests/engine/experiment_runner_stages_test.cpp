@@ -19,6 +19,8 @@
 
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
+#include "grainlab/loading_path.h"
+#include "grainlab/path_measures.h"
 #include "grainlab/stage_kind.h"
 #include "experiment_fixtures.h"
 #include "runner_state.h"
@@ -242,7 +244,8 @@ TEST(ExperimentRunnerStages, TheStageIdentityTravelsAsData) {
     ASSERT_EQ(b->rotation.size(), b->thetaAtTestStart->size());
     for (const StageKind k :
          {StageKind::Compaction, StageKind::Equilibration, StageKind::Shear, StageKind::Done,
-          StageKind::ConstantVolume, StageKind::ConstantP, StageKind::StressPath}) {
+          StageKind::ConstantVolume, StageKind::ConstantP, StageKind::StressPath,
+          StageKind::Cyclic}) {
         EXPECT_EQ(stageKindFromName(stageKindName(k)), k);
         EXPECT_EQ(isTestStage(k), k != StageKind::Compaction && k != StageKind::Equilibration &&
                                       k != StageKind::Done);
@@ -384,6 +387,97 @@ TEST(ExperimentRunnerStages, EveryTestKindResumesFromTheMiddleOfItsTestBitForBit
                   unbroken.simulation().stateRef().grains.x1);
         EXPECT_EQ(resumed.simulation().stateRef().cell, unbroken.simulation().stateRef().cell);
     }
+}
+
+TEST(ExperimentRunnerStages, ACyclicTestFollowsItsWaveformAndMakesItsCycles) {
+    // 0.1 % about 0: 2000 steps to the first peak, 4000 between peaks; two cycles end at step
+    // 18000 of the test. Records every 400 steps, so every peak is a record.
+    const ExperimentConfig config = withTests(nlohmann::json::parse(
+        R"({"kind": "cyclic", "amplitude": 0.001, "cycles": 2})"));
+    MemoryOutput out;
+    ExperimentRunner runner(config, &out);
+    runAll(runner);
+    const SeriesTable& t = runner.series().back();
+    EXPECT_EQ(t.test, "p025kPa-cyclic");
+    const auto rows = testRows(t);
+    ASSERT_EQ(rows.size(), 46u); // steps 0, 400, ..., 18000
+    const CyclicStrainSchedule schedule(0.0, 0.0, 0.001, 5e-7);
+    const double start = column(t, rows.front(), "step");
+    std::vector<double> eps1;
+    for (std::size_t r : rows) {
+        EXPECT_EQ(t.stageKinds[r], "cyclic");
+        const auto n = std::int64_t(column(t, r, "step") - start);
+        // The waveform is exact at every record: eps1 = d s(n), to round-off.
+        EXPECT_NEAR(column(t, r, "eps1"), schedule.strainAt(n), 1e-12) << "step " << n;
+        eps1.push_back(column(t, r, "eps1"));
+        // Drained: sigma22 held at the pressure by the servo.
+        EXPECT_NEAR(column(t, r, "sigma22") / 25e3, 1.0, 0.02) << "step " << n;
+    }
+    EXPECT_EQ(std::int64_t(column(t, rows.back(), "step") - start), schedule.reversalStep(4));
+    EXPECT_EQ(reversalIndices(eps1).size(), 4u); // 2N
+    EXPECT_NEAR(*std::max_element(eps1.begin(), eps1.end()), 0.001, 1e-12);
+    EXPECT_NEAR(*std::min_element(eps1.begin(), eps1.end()), -0.001, 1e-12);
+    for (const RunWarning& w : runner.warnings()) {
+        EXPECT_NE(w.kind, "test_end") << w.text; // it made its cycles: nothing to state
+    }
+
+    // Resumed from a checkpoint in the middle of a cycle (on the unloading leg), it ends the same.
+    const Kept* middle = nullptr;
+    for (const Kept& k : out.kept) {
+        if (!k.runnerState.empty() && k.identity.kind == "cyclic" && k.identity.axialStrain < 0.0009 &&
+            k.identity.axialStrain > -0.0009 && k.identity.step > start + 2000 && !middle) {
+            middle = &k;
+        }
+    }
+    ASSERT_NE(middle, nullptr);
+    MemoryOutput again;
+    ExperimentRunner resumed(config, out.resumeFrom(*middle), &again);
+    runAll(resumed);
+    EXPECT_EQ(resumed.series().back().rows, t.rows);
+    EXPECT_EQ(resumed.simulation().stateRef().grains.x1, runner.simulation().stateRef().grains.x1);
+}
+
+TEST(ExperimentRunnerStages, ALooseSampleCycledAtConstantVolumeStopsWhenItLosesItsPressure) {
+    // Compacted with friction 0.5 (loose) and cycled by 0.01 % at constant volume: p' falls, and
+    // the test stops at the first record below half of p0, long before its 50 cycles, saying why.
+    // (Measured: after 2 reversals, p' 11.2 of 25 kPa.)
+    nlohmann::json j = test::smallQuickExperiment();
+    j["compaction"]["pressures"] = {25e3};
+    j["compaction"]["friction"] = 0.5;
+    j["shear"]["pressures"] = {25e3};
+    j["test"] = nlohmann::json::parse(R"({"kind": "cyclic", "drainage": "constant_volume",
+        "amplitude": 0.0001, "cycles": 50, "stop_pressure_fraction": 0.5})");
+    const ExperimentConfig config = parseExperimentText(j.dump(), "loose-cyclic.json");
+    ExperimentRunner runner(config);
+    while (runner.advance(20000)) {
+    }
+    const SeriesTable& t = runner.series().back();
+    const auto rows = testRows(t);
+    const double p0 = column(t, rows.front(), "p");
+    std::vector<double> eps1;
+    for (std::size_t r : rows) {
+        EXPECT_LE(std::fabs(column(t, r, "epsv")), 1e-12);
+        eps1.push_back(column(t, r, "eps1"));
+    }
+    // Every record before the last holds p' >= p0 / 2; the last is below it.
+    for (std::size_t k = 0; k + 1 < rows.size(); ++k) {
+        EXPECT_GE(column(t, rows[k], "p"), 0.5 * p0) << "record " << k;
+    }
+    EXPECT_LT(column(t, rows.back(), "p"), 0.5 * p0);
+    EXPECT_GE(reversalIndices(eps1).size(), 1u); // it cycled before it lost p'
+    EXPECT_LT(reversalIndices(eps1).size(), 100u);
+    int notices = 0;
+    for (const RunWarning& w : runner.warnings()) {
+        if (w.kind == "test_end") {
+            ++notices;
+            EXPECT_EQ(w.test, "p025kPa-cyclic");
+            EXPECT_NE(w.text.find("test.stop_pressure_fraction"), std::string::npos) << w.text;
+        }
+    }
+    EXPECT_EQ(notices, 1);
+    std::printf("loose sample, constant volume, amplitude 0.01 %%: stopped after %zu reversals, p' %.0f of "
+                "%.0f Pa\n",
+                reversalIndices(eps1).size(), column(t, rows.back(), "p"), p0);
 }
 
 } // namespace

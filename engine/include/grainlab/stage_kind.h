@@ -18,14 +18,15 @@ enum class StageKind {
     ConstantVolume = 4, ///< axis 1 strained, the cell's area held (the undrained analogue)
     ConstantP = 5,      ///< axis 1 strained, sigma22 servoed to keep p
     StressPath = 6,     ///< axis 1 strained, sigma22 servoed along a linear path in sigma11
+    Cyclic = 7,         ///< axis 1 strained back and forth, drained or at constant volume
 };
 
 /// True for the kinds that are a test of a sample (its eps1 is the test's axial strain): the
 /// drained shear test and the other loading paths.
 bool isTestStage(StageKind kind);
 
-/// "compaction", "equilibration", "shear", "done", "constant_volume", "constant_p" or
-/// "stress_path" (the run file's checkpoint kind; a test's kind is the name its experiment file
+/// "compaction", "equilibration", "shear", "done", "constant_volume", "constant_p",
+/// "stress_path" or "cyclic" (the run file's checkpoint kind; a test's kind is the name its experiment file
 /// gives it, "shear" for the drained test).
 std::string stageKindName(StageKind kind);
 /// The kind of a name stageKindName() gives; nullopt for any other text.
