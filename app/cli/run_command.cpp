@@ -190,7 +190,10 @@ int runExperimentCommand(const RunOptions& options) {
         const auto printWarnings = [&] {
             const std::vector<RunWarning>& all = runner->warnings();
             for (; warned < all.size(); ++warned) {
-                bar.note(fmt::format("grainlab run: warning ({}, step {}): {}", all[warned].test,
+                // A test ended by its stop criterion is news, not a warning.
+                const bool ended = all[warned].kind == "test_end";
+                bar.note(fmt::format("grainlab run: {} ({}, step {}): {}",
+                                     ended ? "test ended early" : "warning", all[warned].test,
                                      all[warned].step, all[warned].text));
             }
         };
