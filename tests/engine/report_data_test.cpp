@@ -331,5 +331,45 @@ TEST(CriticalStateOfRuns, MAndTheLineComeFromTheSteadyEndsOnly) {
     }
 }
 
+TEST(ReportFigures, ACyclicTestHasItsLoopsAndItsPressurePerCycleNotAMeanCurve) {
+    // A drained test and a cyclic one of two cycles in which p' halves every cycle.
+    std::vector<ReportRun> runs(1);
+    runs[0].name = "seed1";
+    runs[0].tests.push_back(endingTest("p025kPa", "shear", 25e3, 12e3, 0.2));
+    runs[0].pressures.push_back(25e3);
+    test::SeriesBuilder b("p025kPa-cyclic");
+    const double strains[] = {0, 0.001, 0, -0.001, 0, 0.001, 0, -0.001, 0, 0.001};
+    const double pressures[] = {25e3, 22e3, 20e3, 17e3, 14e3, 12.5e3, 10e3, 8e3, 7e3, 6.25e3};
+    for (int k = 0; k < 10; ++k) {
+        auto& r = b.row("cyclic 25 kPa");
+        b.t.stageKinds.push_back("cyclic");
+        b.at(r, "eps1") = strains[k];
+        b.at(r, "p") = pressures[k];
+        b.at(r, "q") = 1e6 * strains[k];
+    }
+    runs[0].tests.push_back(b.t);
+    runs[0].pressures.push_back(25e3);
+    const auto figures = reportFigures(runs);
+    // The strain figures average over a grid of eps1: the cyclic test is not among their lines.
+    for (const ReportLine& l : figure(figures, "01_q_over_p").lines) {
+        EXPECT_NE(l.test, "p025kPa-cyclic");
+    }
+    const ReportFigure& loops = figure(figures, "10_p025kPa-cyclic_loops");
+    ASSERT_EQ(loops.lines.size(), 1u);
+    EXPECT_EQ(loops.lines[0].x.size(), 10u); // every record, as recorded
+    EXPECT_EQ(loops.xLabel, "ε1 [%]");
+    EXPECT_EQ(loops.lines[0].label, "seed1");
+    const ReportFigure& decay = figure(figures, "10_p025kPa-cyclic_p_per_cycle");
+    ASSERT_EQ(decay.lines.size(), 1u);
+    // Cycle 0 at p0; cycles end at the upper peaks (records 5 and 9): 12.5 and 6.25 kPa.
+    ASSERT_EQ(decay.lines[0].x, (std::vector<double>{0, 1, 2}));
+    EXPECT_DOUBLE_EQ(decay.lines[0].y[1], 0.5);
+    EXPECT_DOUBLE_EQ(decay.lines[0].y[2], 0.25);
+    // Its end is no steady state of the critical state.
+    for (const TestEndState& end : criticalStateOf(runs).ends) {
+        EXPECT_NE(end.test, "p025kPa-cyclic");
+    }
+}
+
 } // namespace
 } // namespace grainlab

@@ -124,7 +124,7 @@ TEST(ShearMetrics, TheRowsStageKindDecidesWhatIsShearWhereTheTableHasIt) {
 TEST(ShearMetrics, NamedMetricsCarryEveryValueWithItsUnit) {
     const ShearMetrics m = shearMetrics(syntheticTest(), 1e5);
     const auto named = namedMetrics(m);
-    ASSERT_EQ(named.size(), 22u);
+    ASSERT_EQ(named.size(), 24u);
     EXPECT_EQ(named[0].name, "peak_q_over_p");
     EXPECT_DOUBLE_EQ(*named[0].value, 0.5);
     EXPECT_EQ(named[4].name, "q_over_p_at_5pc");
@@ -137,8 +137,8 @@ TEST(ShearMetrics, NamedMetricsCarryEveryValueWithItsUnit) {
     EXPECT_EQ(named[19].unit, "Pa");
     EXPECT_EQ(named[21].name, "M_steady");
     for (const auto& n : named) {
-        // Still dilating at its end (eps_v = -eps1 / 2): no steady end, no M.
-        EXPECT_EQ(n.value.has_value(), n.name != "M_steady") << n.name;
+        // Still dilating at its end (eps_v = -eps1 / 2): no steady end, no M; no cycles.
+        EXPECT_EQ(n.value.has_value(), n.name != "M_steady" && n.name != "cycles") << n.name;
     }
 }
 
@@ -167,6 +167,28 @@ TEST(ShearMetrics, PeakDeviatorAndTheStressRatioOfASteadyEnd) {
         t.stageKinds.push_back(k == 0 ? "equilibration" : "constant_volume");
     }
     EXPECT_FALSE(shearMetrics(t, 1e5).maxLateralStressError.has_value());
+    // p' never fell below its first value of 1e5: p_min / p0 = 1.
+    EXPECT_DOUBLE_EQ(*m.lowestPressureRatio, 1.0);
+}
+
+TEST(ShearMetrics, ACyclicTestCountsItsCyclesAndItsLowestPressure) {
+    // eps1 0 -> 0.01 -> -0.01 -> 0.01 -> -0.01 -> 0.01: four reversals, two cycles; p' falls by
+    // 10 % per record from 1e5.
+    SeriesBuilder b("p100kPa-cyclic");
+    const double strains[] = {0, 0.005, 0.01, 0, -0.01, 0, 0.01, 0, -0.01, 0, 0.01};
+    double p = 1e5;
+    for (double e : strains) {
+        auto& r = b.row("cyclic 100 kPa");
+        b.t.stageKinds.push_back("cyclic");
+        b.at(r, "eps1") = e;
+        b.at(r, "p") = p;
+        b.at(r, "q") = 0.3 * p * (e > 0 ? 1 : -1);
+        p *= 0.9;
+    }
+    const ShearMetrics m = shearMetrics(b.t, 1e5);
+    ASSERT_TRUE(m.cyclesCompleted.has_value());
+    EXPECT_EQ(*m.cyclesCompleted, 2.0);
+    EXPECT_NEAR(*m.lowestPressureRatio, std::pow(0.9, 10), 1e-12);
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "grainlab/measures.h"
+#include "grainlab/path_measures.h"
 #include "grainlab/shear_metrics.h"
 
 namespace grainlab {
@@ -17,11 +18,21 @@ struct TestKey {
     double pressure = 0;
 };
 
-/// Every test of the runs (by name), in the order of their confining pressures.
-std::vector<TestKey> testsOf(const std::vector<ReportRun>& runs) {
+/// True for a table whose test rows are a cyclic test's (its eps1 goes back and forth: no
+/// curve against eps1 on a common grid, no steady end).
+bool isCyclicTable(const SeriesTable& t) {
+    return std::find(t.stageKinds.begin(), t.stageKinds.end(), "cyclic") != t.stageKinds.end();
+}
+
+/// Every test of the runs (by name), in the order of their confining pressures: the monotonic
+/// ones (drained, constant volume, paths), or with `cyclic` the cyclic ones.
+std::vector<TestKey> testsOf(const std::vector<ReportRun>& runs, bool cyclic = false) {
     std::vector<TestKey> keys;
     for (const ReportRun& r : runs) {
         for (std::size_t t = 0; t < r.tests.size(); ++t) {
+            if (isCyclicTable(r.tests[t]) != cyclic) {
+                continue;
+            }
             const std::string& name = r.tests[t].test;
             const bool known = std::any_of(keys.begin(), keys.end(),
                                            [&](const TestKey& k) { return k.test == name; });
@@ -304,6 +315,9 @@ CriticalStateSummary criticalStateOf(const std::vector<ReportRun>& runs,
     for (const ReportRun& run : runs) {
         for (std::size_t t = 0; t < run.tests.size(); ++t) {
             const SeriesTable& table = run.tests[t];
+            if (isCyclicTable(table)) {
+                continue; // its end is a point of a loop, not a steady state
+            }
             const Curve q = shearCurve(table, "q"), p = shearCurve(table, "p");
             const Curve epsv = shearCurve(table, "epsv"), e = shearCurve(table, "e");
             if (q.y.empty()) {
@@ -524,6 +538,68 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
         f.note = "each point: a test's steady end, mean ± 1σ over the runs";
         add(std::move(f));
     }
+
+    // 10. Each cyclic test: its q - eps1 loops and p'/p0 at the end of each cycle, run by run
+    // (a loop is no curve against eps1, so no mean over runs is drawn).
+    for (const TestKey& key : testsOf(runs, true)) {
+        ReportFigure loops = figureOf("10_" + key.test + "_loops",
+                                      "q against ε1, " + testLabel(key), "eps1", "q");
+        loops.bands = false;
+        ReportFigure cycles = figureOf("10_" + key.test + "_p_per_cycle",
+                                       "p′ at the end of each cycle, " + testLabel(key),
+                                       "cycle", "p_over_p0");
+        cycles.xLabel = "cycle";
+        cycles.yLabel = "p′/p0";
+        cycles.bands = false;
+        for (const ReportRun& run : runs) {
+            for (const SeriesTable& t : run.tests) {
+                if (t.test != key.test) {
+                    continue;
+                }
+                const Curve q = shearCurve(t, "q"), p = shearCurve(t, "p");
+                if (q.x.empty()) {
+                    continue;
+                }
+                ReportLine loop;
+                loop.label = run.name;
+                loop.test = key.test;
+                loop.pressure = key.pressure;
+                loop.x = q.x;
+                loop.y = q.y;
+                loop.sd.assign(q.y.size(), 0.0);
+                loop.runs.assign(q.y.size(), 1);
+                loops.lines.push_back(std::move(loop));
+                ReportLine decay;
+                decay.label = run.name;
+                decay.test = key.test;
+                decay.pressure = key.pressure;
+                decay.x = {0.0};
+                decay.y = {1.0};
+                const double p0 = p.y.front();
+                // The upper peaks: reversals 0, 2, 4, ..., and the last record when the test
+                // ended on one (a test that made all its cycles ends at an upper peak).
+                const std::vector<std::size_t> turns = reversalIndices(q.x);
+                std::vector<std::size_t> peaks;
+                for (std::size_t k = 0; k < turns.size(); k += 2) {
+                    peaks.push_back(turns[k]);
+                }
+                if (!turns.empty() && turns.size() % 2 == 0 &&
+                    q.x.back() >= q.x[turns.front()] - 1e-12) {
+                    peaks.push_back(q.x.size() - 1);
+                }
+                for (std::size_t k = 1; k < peaks.size(); ++k) {
+                    decay.x.push_back(double(k));
+                    decay.y.push_back(p0 > 0 ? p.y[peaks[k]] / p0 : 0.0);
+                }
+                decay.sd.assign(decay.y.size(), 0.0);
+                decay.runs.assign(decay.y.size(), 1);
+                cycles.lines.push_back(std::move(decay));
+            }
+        }
+        cycles.note = "p′/p0 at each upper peak of ε1 (a cycle's end), cycle 0 the test's start";
+        add(std::move(loops));
+        add(std::move(cycles));
+    }
     return figures;
 }
 
@@ -639,7 +715,9 @@ PooledFitScatter pooledFitOverRuns(const std::vector<ReportRun>& runs) {
     for (const ReportRun& r : runs) {
         std::vector<double> x, y;
         for (const SeriesTable& t : r.tests) {
-            appendFitRecords(t, x, y);
+            if (!isCyclicTable(t)) {
+                appendFitRecords(t, x, y);
+            }
         }
         if (const auto fit = fitLine(x, y)) {
             slopes.push_back(fit->slope);

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "grainlab/critical_state.h"
+#include "grainlab/path_measures.h"
 #include "grainlab/stage_kind.h"
 
 namespace grainlab {
@@ -143,6 +144,17 @@ ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
         m.meanStressAtPeakDeviator = cell(test, pc, peak);
         const Curve qCurve = shearCurve(test, "q"), pCurve = shearCurve(test, "p");
         const Curve vCurve = shearCurve(test, "epsv");
+        if (pCurve.y.front() > 0) {
+            double lowest = pCurve.y.front();
+            for (double v : pCurve.y) {
+                lowest = std::min(lowest, v);
+            }
+            m.lowestPressureRatio = lowest / pCurve.y.front();
+        }
+        if (test.stageKinds.size() == test.rows.size() &&
+            test.stageKinds[rows.back()] == "cyclic") {
+            m.cyclesCompleted = 0.5 * double(reversalIndices(qCurve.x).size());
+        }
         if (vCurve.y.size() == qCurve.y.size() &&
             steadyState(qCurve.x, qCurve.y, pCurve.y, vCurve.y).steady && pCurve.y.back() > 0) {
             m.criticalStressRatio = qCurve.y.back() / pCurve.y.back();
@@ -195,6 +207,8 @@ std::vector<NamedMetric> namedMetrics(const ShearMetrics& m) {
     out.push_back({"q_peak", "Pa", m.peakDeviator});
     out.push_back({"p_at_q_peak", "Pa", m.meanStressAtPeakDeviator});
     out.push_back({"M_steady", "-", m.criticalStressRatio});
+    out.push_back({"cycles", "-", m.cyclesCompleted});
+    out.push_back({"p_min_over_p0", "-", m.lowestPressureRatio});
     return out;
 }
 

@@ -45,6 +45,10 @@ struct ShearMetrics {
     /// q/p at the test's end when the end is steady (critical_state.h, default criterion): the
     /// test's estimate of M; empty when it is not steady [-]
     std::optional<double> criticalStressRatio;
+    /// A cyclic test's completed cycles (reversals of eps1 over its records, halved): with a
+    /// stop on p', the cycles to that criterion; empty for other kinds [-]
+    std::optional<double> cyclesCompleted;
+    std::optional<double> lowestPressureRatio; ///< min p′/p0 over the test (p0 its first) [-]
 };
 
 /// The metrics of one test recorded at confining pressure `confiningPressure` [Pa]. Values the
