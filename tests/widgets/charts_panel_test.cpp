@@ -31,7 +31,7 @@ TEST(ChartsPanel, OverlaysTestsInTheirColoursInDisplayUnits) {
     const std::vector<SeriesTable> tables{testing::makeSeries("p15kPa", 200, 0.5),
                                           testing::makeSeries("p100kPa", 150, 0.4)};
     panel.setSeries(tables);
-    ASSERT_EQ(panel.chartCount(), 12); // six of the shear tests, two stress paths, four compaction
+    ASSERT_EQ(panel.chartCount(), 13); // six of the shear tests, three of paths, four compaction
     const int q = chartIndex(panel, QStringLiteral("q_over_p"));
     const int v = chartIndex(panel, QStringLiteral("epsv"));
     const int f = chartIndex(panel, QStringLiteral("fabric"));
@@ -93,6 +93,11 @@ TEST(ChartsPanel, StressPathsOfEveryTestKindInQAgainstPAndEAgainstLnP) {
     EXPECT_DOUBLE_EQ(ends.back().y(), 0.16);
     // A test of another kind is charted on the shear page too, and its stage leads there.
     EXPECT_EQ(panel.pageOfStage(StageKind::ConstantVolume), QStringLiteral("Shear tests"));
+    EXPECT_EQ(panel.pageOfStage(StageKind::Cyclic), QStringLiteral("Shear tests"));
+    // q against eps1 keeps the records' order: a cyclic test's strain going back draws a loop.
+    const int qe = chartIndex(panel, QStringLiteral("q_vs_eps1"));
+    ASSERT_GE(qe, 0);
+    EXPECT_EQ(panel.curvePoints(qe, t.test, "q").size(), 20);
 }
 
 TEST(ChartsPanel, ShearOnlySkipsCompactionRows) {
