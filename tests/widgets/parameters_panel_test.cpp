@@ -4,6 +4,7 @@
 // rule (each shear pressure one of the compaction pressures, listed once). Typed with QTest.
 #include <vector>
 
+#include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QTest>
@@ -39,6 +40,29 @@ TEST(ParametersPanel, UntouchedPanelGivesBackTheExperiment) {
     const ExperimentConfig a = panel.applied();
     EXPECT_EQ(a.compaction.pressures, c.compaction.pressures);
     EXPECT_EQ(a.shear.pressures, c.shear.pressures);
+}
+
+TEST(ParametersPanel, TheTestIsChosenAndAListOrACyclicTestIsKeptAsTheFileHasIt) {
+    ParametersPanel panel;
+    for (const char* preset : {"quick-cyclic.json", "quick-critical-state.json"}) {
+        const ExperimentConfig c =
+            readExperimentFile(std::string(GRAINLAB_SOURCE_DIR "/resources/experiments/") + preset);
+        panel.setExperiment(c);
+        EXPECT_TRUE(panel.testKindEdit()->currentText().startsWith(QStringLiteral("as in the file")))
+            << preset << ": " << panel.testKindEdit()->currentText().toStdString();
+        const ExperimentConfig kept = panel.applied();
+        ASSERT_EQ(kept.tests.size(), c.tests.size()) << preset;
+        EXPECT_EQ(kept.tests.front().kind, c.tests.front().kind) << preset;
+        EXPECT_EQ(kept.tests.front().amplitude, c.tests.front().amplitude) << preset;
+        // Another test chosen replaces the file's.
+        panel.testKindEdit()->setCurrentIndex(
+            panel.testKindEdit()->findData(QStringLiteral("constant_p")));
+        ASSERT_EQ(panel.applied().tests.size(), 1u);
+        EXPECT_EQ(panel.applied().tests[0].kind, LoadingPath::Kind::ConstantP);
+    }
+    // A file of one editable test shows it.
+    panel.setExperiment(compactFourShearOne());
+    EXPECT_EQ(panel.testKindEdit()->currentData().toString(), QStringLiteral("drained"));
 }
 
 TEST(ParametersPanel, EditingTheShearListKeepsTheCompactionStages) {

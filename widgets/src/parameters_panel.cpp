@@ -82,7 +82,12 @@ void ParametersPanel::setExperiment(const ExperimentConfig& config) {
     {
         const QSignalBlocker block(testKind_);
         testKind_->clear();
-        if (config.tests.size() > 1) {
+        // A list of tests, or a kind the panel has no keys for (cyclic): kept as the file has it
+        // unless another test is chosen.
+        const bool keep = config.tests.size() > 1 ||
+                          config.tests.front().kind == LoadingPath::Kind::Cyclic ||
+                          config.tests.front().kind == LoadingPath::Kind::Probes;
+        if (keep) {
             QStringList kinds;
             for (const LoadingPath& t : config.tests) {
                 kinds << QString::fromLatin1(loadingKindName(t.kind));
@@ -94,7 +99,7 @@ void ParametersPanel::setExperiment(const ExperimentConfig& config) {
         testKind_->addItem(tr("constant volume"), QStringLiteral("constant_volume"));
         testKind_->addItem(tr("constant p"), QStringLiteral("constant_p"));
         testKind_->addItem(tr("stress path"), QStringLiteral("stress_path"));
-        if (config.tests.size() == 1) {
+        if (!keep) {
             testKind_->setCurrentIndex(testKind_->findData(
                 QString::fromLatin1(loadingKindName(config.tests.front().kind))));
         }

@@ -2,7 +2,8 @@
 // The experiment's main parameters, editable before a run: which compacted samples are sheared,
 // grain count, friction during shear, the axial strain target and the test each sample gets
 // (drained, constant volume, constant p or a linear stress path with its slope; a file that lists
-// several tests keeps its list unless another test is chosen). The compaction stages are
+// several tests, or a cyclic test, whose keys are the file's, keeps it unless another test is
+// chosen). The compaction stages are
 // shown, not edited: the panel never changes the experiment behind the user (one pressure list
 // for both would turn "compact at 15, 25, 50, 100 kPa, shear at 100 kPa" into one compaction at
 // 100 kPa). Values are checked as they are typed, the shear list by the experiment file's own
@@ -45,7 +46,7 @@ public:
     QDoubleSpinBox* frictionEdit() const { return friction_; }
     QDoubleSpinBox* strainTargetEdit() const { return strain_; }
     /// The test's kind: "drained", "constant_volume", "constant_p", "stress_path" (item data),
-    /// and first "as in the file" when the file lists several tests.
+    /// and first "as in the file" when the file lists several tests or a cyclic one.
     QComboBox* testKindEdit() const { return testKind_; }
     /// The stress path's slope a (enabled for a stress path only).
     QDoubleSpinBox* pathSlopeEdit() const { return slope_; }
