@@ -425,12 +425,19 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
         const LoadingPath& t = config.tests[k];
         const std::string at =
             top.has("test") && top.at("test").is_array() ? fmt::format("test[{}].", k) : "test.";
-        if (t.kind == LoadingPath::Kind::Probes) {
+        if (t.kind == LoadingPath::Kind::Probes && t.start != LoadingPath::Start::End) {
             throw ExperimentFileError(
-                sourceName, at + "kind",
-                fmt::format("{}kind = \"probes\": not available in this version (available: "
-                            "drained, constant_volume, constant_p, stress_path, cyclic)",
+                sourceName, at + "start",
+                fmt::format("{}start: probes from a strain or the peak of a test are not "
+                            "available in this version (available: \"end\", where the test "
+                            "before them in the list ended)",
                             at));
+        }
+        if (t.kind == LoadingPath::Kind::Probes && t.plane == LoadingPath::Plane::Stress) {
+            throw ExperimentFileError(sourceName, at + "plane",
+                                      fmt::format("{}plane = \"stress\": not available in this "
+                                                  "version (available: \"strain\")",
+                                                  at));
         }
         if (t.kind == LoadingPath::Kind::Cyclic && t.control == LoadingPath::Control::Stress) {
             throw ExperimentFileError(sourceName, at + "control",

@@ -41,6 +41,10 @@ std::string runnerStateText(const RunnerState& s) {
     }
     j["warnings"] = given;
     j["unbalanced_low"] = s.unbalancedLow;
+    if (s.probeStartStep != 0) { // written by a probes stage only: earlier texts stay the same
+        j["probe"] = s.probe;
+        j["probe_start_step"] = s.probeStartStep;
+    }
     if (s.peak) {
         nlohmann::json p;
         p["q_over_p"] = s.peak->stressRatio;
@@ -85,6 +89,10 @@ RunnerState parseRunnerState(const std::string& text) {
     }
     if (j.contains("unbalanced_low")) {
         s.unbalancedLow = j.at("unbalanced_low").get<std::array<double, 4>>();
+    }
+    if (j.contains("probe")) {
+        s.probe = j.at("probe");
+        s.probeStartStep = j.at("probe_start_step");
     }
     if (j.contains("peak")) {
         const nlohmann::json& p = j.at("peak");

@@ -52,6 +52,10 @@ struct RunnerState {
     // The shear test (stage_monotonic_test.h).
     double voidsAtStart = -1; ///< N_vi of the test; -1 before its first record
     std::optional<RunningPeakRecord> peak;
+    // Stress probes (stage_probes.h): the probe under way and the step it started at; their
+    // start state is kept beside a checkpoint like a running peak (peak.kept_in).
+    int probe = 0;
+    std::int64_t probeStartStep = 0;
 };
 
 /// The JSON text of a runner state.

@@ -6,6 +6,7 @@
 
 #include "stage_compaction.h"
 #include "stage_cyclic.h"
+#include "stage_probes.h"
 #include "stage_monotonic_test.h"
 #include "stage_equilibration.h"
 
@@ -24,7 +25,7 @@ StageKind stageKindOf(const LoadingPath& path) {
     case LoadingPath::Kind::Cyclic:
         return StageKind::Cyclic;
     case LoadingPath::Kind::Probes:
-        break;
+        return StageKind::Probes;
     }
     throw std::invalid_argument(fmt::format("experiment: tests of kind {} are not available",
                                             loadingKindName(path.kind)));
@@ -42,7 +43,10 @@ std::vector<PlannedStage> experimentPlan(const ExperimentConfig& config) {
         for (std::size_t j = 0; j < n; ++j) {
             const int index = int(k * n + j);
             const std::string series = testName(pressures[k]) + testSuffix(config.tests[j]);
-            plan.push_back({StageKind::Equilibration, index, pressures[k], int(j), series});
+            // Probes after another test start where it ended: no re-equilibration between.
+            if (j == 0 || config.tests[j].kind != LoadingPath::Kind::Probes) {
+                plan.push_back({StageKind::Equilibration, index, pressures[k], int(j), series});
+            }
             plan.push_back(
                 {stageKindOf(config.tests[j]), index, pressures[k], int(j), series});
         }
@@ -77,6 +81,8 @@ std::unique_ptr<Stage> makeStage(const PlannedStage& planned) {
         return std::make_unique<MonotonicTestStage>(planned);
     case StageKind::Cyclic:
         return std::make_unique<CyclicStage>(planned);
+    case StageKind::Probes:
+        return std::make_unique<ProbesStage>(planned);
     case StageKind::Done:
         break;
     }

@@ -8,7 +8,7 @@
 namespace grainlab {
 namespace {
 
-constexpr std::array<std::pair<StageKind, const char*>, 8> kNames{{
+constexpr std::array<std::pair<StageKind, const char*>, 9> kNames{{
     {StageKind::Compaction, "compaction"},
     {StageKind::Equilibration, "equilibration"},
     {StageKind::Shear, "shear"},
@@ -17,6 +17,7 @@ constexpr std::array<std::pair<StageKind, const char*>, 8> kNames{{
     {StageKind::ConstantP, "constant_p"},
     {StageKind::StressPath, "stress_path"},
     {StageKind::Cyclic, "cyclic"},
+    {StageKind::Probes, "probes"},
 }};
 
 } // namespace
@@ -24,7 +25,7 @@ constexpr std::array<std::pair<StageKind, const char*>, 8> kNames{{
 bool isTestStage(StageKind kind) {
     return kind == StageKind::Shear || kind == StageKind::ConstantVolume ||
            kind == StageKind::ConstantP || kind == StageKind::StressPath ||
-           kind == StageKind::Cyclic;
+           kind == StageKind::Cyclic || kind == StageKind::Probes;
 }
 
 std::string stageKindName(StageKind kind) {

@@ -196,8 +196,10 @@ TEST(ExperimentFile, TheTestKeyHoldsOneTestOrAList) {
     // Kinds the runner does not play yet are refused, not run as something else.
     j["test"] = Json::parse(R"({"kind": "cyclic", "control": "stress", "amplitude": 1e4})");
     expectRefused(j, "test.control", {"\"stress\": not available", "\"strain\""});
-    j["test"] = Json::parse(R"([{"kind": "drained"}, {"kind": "probes"}])");
-    expectRefused(j, "test[1].kind", {"\"probes\": not available", "cyclic"});
+    j["test"] = Json::parse(R"([{"kind": "drained"}, {"kind": "probes", "start": "peak"}])");
+    expectRefused(j, "test[1].start", {"not available", "\"end\""});
+    j["test"] = Json::parse(R"([{"kind": "drained"}, {"kind": "probes", "plane": "stress"}])");
+    expectRefused(j, "test[1].plane", {"\"stress\": not available", "\"strain\""});
     // A strain cycle shorter than one step of strain has no waveform.
     j["shear"]["axial_strain_per_step"] = 1e-5;
     j["shear"]["max_strain_rate"] = 100;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "grainlab/path_measures.h"
 #include "grainlab/report_data.h"
 #include "series_builder.h"
 
@@ -368,6 +369,45 @@ TEST(ReportFigures, ACyclicTestHasItsLoopsAndItsPressurePerCycleNotAMeanCurve) {
     // Its end is no steady state of the critical state.
     for (const TestEndState& end : criticalStateOf(runs).ends) {
         EXPECT_NE(end.test, "p025kPa-cyclic");
+    }
+}
+
+TEST(ReportFigures, AProbeSetDrawsItsResponseEnvelopeLessTheDrift) {
+    // Eight probes whose responses are A u_k plus a drift that the zero probe also has: the
+    // envelope drawn is A u_k (an ellipse about the origin), closed, and called elastic.
+    std::vector<ReportRun> runs(1);
+    runs[0].name = "seed1";
+    test::SeriesBuilder b("p025kPa-probes");
+    const auto directions = probeDirections(8);
+    const double drift11 = 300, drift22 = -100;
+    for (int k = -2; k < 8; ++k) { // the start, the zero probe, the probes
+        auto& r = b.row("probes 25 kPa");
+        b.t.stageKinds.push_back("probes");
+        double s11 = 25e3, s22 = 25e3;
+        if (k >= -1) {
+            s11 += drift11;
+            s22 += drift22;
+        }
+        if (k >= 0) {
+            s11 += 2e3 * directions[std::size_t(k)][0] + 500 * directions[std::size_t(k)][1];
+            s22 += 500 * directions[std::size_t(k)][0] + 1e3 * directions[std::size_t(k)][1];
+        }
+        b.at(r, "sigma11") = s11;
+        b.at(r, "sigma22") = s22;
+    }
+    runs[0].tests.push_back(b.t);
+    runs[0].pressures.push_back(25e3);
+    const auto figures = reportFigures(runs);
+    const ReportFigure& f = figure(figures, "11_p025kPa-probes_envelope");
+    ASSERT_EQ(f.lines.size(), 1u);
+    ASSERT_EQ(f.lines[0].x.size(), 9u); // closed
+    EXPECT_NEAR(f.lines[0].x[0], 2e3, 1e-9);  // u_0 = (1, 0): the drift taken off
+    EXPECT_NEAR(f.lines[0].y[0], 500, 1e-9);
+    EXPECT_EQ(f.lines[0].x.back(), f.lines[0].x.front());
+    EXPECT_NE(f.note.find("asymmetry"), std::string::npos) << f.note;
+    EXPECT_EQ(f.xLabel, "Δσ11 [kPa]");
+    for (const ReportLine& l : figure(figures, "01_q").lines) {
+        EXPECT_NE(l.test, "p025kPa-probes");
     }
 }
 

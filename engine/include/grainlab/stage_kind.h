@@ -19,6 +19,7 @@ enum class StageKind {
     ConstantP = 5,      ///< axis 1 strained, sigma22 servoed to keep p
     StressPath = 6,     ///< axis 1 strained, sigma22 servoed along a linear path in sigma11
     Cyclic = 7,         ///< axis 1 strained back and forth, drained or at constant volume
+    Probes = 8,         ///< small strain increments in evenly spread directions from one state
 };
 
 /// True for the kinds that are a test of a sample (its eps1 is the test's axial strain): the
@@ -26,7 +27,7 @@ enum class StageKind {
 bool isTestStage(StageKind kind);
 
 /// "compaction", "equilibration", "shear", "done", "constant_volume", "constant_p",
-/// "stress_path" or "cyclic" (the run file's checkpoint kind; a test's kind is the name its experiment file
+/// "stress_path", "cyclic" or "probes" (the run file's checkpoint kind; a test's kind is the name its experiment file
 /// gives it, "shear" for the drained test).
 std::string stageKindName(StageKind kind);
 /// The kind of a name stageKindName() gives; nullopt for any other text.

@@ -1,6 +1,7 @@
 #include "grainlab/report_data.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <tuple>
 
@@ -24,13 +25,24 @@ bool isCyclicTable(const SeriesTable& t) {
     return std::find(t.stageKinds.begin(), t.stageKinds.end(), "cyclic") != t.stageKinds.end();
 }
 
-/// Every test of the runs (by name), in the order of their confining pressures: the monotonic
-/// ones (drained, constant volume, paths), or with `cyclic` the cyclic ones.
-std::vector<TestKey> testsOf(const std::vector<ReportRun>& runs, bool cyclic = false) {
+/// True for a table of stress probes (a start, a zero probe, one record per probe).
+bool isProbesTable(const SeriesTable& t) {
+    return std::find(t.stageKinds.begin(), t.stageKinds.end(), "probes") != t.stageKinds.end();
+}
+
+/// Neither cyclic nor probes: a test whose records follow eps1 one way.
+bool isMonotonicTable(const SeriesTable& t) {
+    return !isCyclicTable(t) && !isProbesTable(t);
+}
+
+/// Every test of the runs (by name) of one sort (monotonic: drained, constant volume, paths;
+/// cyclic; probes), in the order of their confining pressures.
+std::vector<TestKey> testsOf(const std::vector<ReportRun>& runs,
+                             bool (*sort)(const SeriesTable&) = isMonotonicTable) {
     std::vector<TestKey> keys;
     for (const ReportRun& r : runs) {
         for (std::size_t t = 0; t < r.tests.size(); ++t) {
-            if (isCyclicTable(r.tests[t]) != cyclic) {
+            if (!sort(r.tests[t])) {
                 continue;
             }
             const std::string& name = r.tests[t].test;
@@ -210,6 +222,23 @@ ReportLine dilatancyLine(const std::vector<ReportRun>& runs, const TestKey& key,
     return line;
 }
 
+/// The responses of a probes table: each probe's (d sigma11, d sigma22) minus the zero probe's
+/// (rows: the start, the zero probe, the K probes); nothing when K is not even and >= 4.
+std::optional<std::vector<std::array<double, 2>>> probeResponses(const SeriesTable& t) {
+    const std::vector<std::size_t> rows = shearRows(t);
+    const int s11 = t.column("sigma11"), s22 = t.column("sigma22");
+    if (rows.size() < 6 || (rows.size() - 2) % 2 != 0 || s11 < 0 || s22 < 0) {
+        return std::nullopt;
+    }
+    const auto& zero = t.rows[rows[1]];
+    std::vector<std::array<double, 2>> out;
+    for (std::size_t k = 2; k < rows.size(); ++k) {
+        out.push_back({t.rows[rows[k]][std::size_t(s11)] - zero[std::size_t(s11)],
+                       t.rows[rows[k]][std::size_t(s22)] - zero[std::size_t(s22)]});
+    }
+    return out;
+}
+
 /// A figure of `yColumn` against `xColumn`, labelled as a paper would (axisLabelOf).
 ReportFigure figureOf(std::string name, std::string title, const std::string& xColumn,
                       const std::string& yColumn) {
@@ -315,8 +344,8 @@ CriticalStateSummary criticalStateOf(const std::vector<ReportRun>& runs,
     for (const ReportRun& run : runs) {
         for (std::size_t t = 0; t < run.tests.size(); ++t) {
             const SeriesTable& table = run.tests[t];
-            if (isCyclicTable(table)) {
-                continue; // its end is a point of a loop, not a steady state
+            if (!isMonotonicTable(table)) {
+                continue; // its end is a point of a loop or a probe, not a steady state
             }
             const Curve q = shearCurve(table, "q"), p = shearCurve(table, "p");
             const Curve epsv = shearCurve(table, "epsv"), e = shearCurve(table, "e");
@@ -541,7 +570,7 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
 
     // 10. Each cyclic test: its q - eps1 loops and p'/p0 at the end of each cycle, run by run
     // (a loop is no curve against eps1, so no mean over runs is drawn).
-    for (const TestKey& key : testsOf(runs, true)) {
+    for (const TestKey& key : testsOf(runs, isCyclicTable)) {
         ReportFigure loops = figureOf("10_" + key.test + "_loops",
                                       "q against ε1, " + testLabel(key), "eps1", "q");
         loops.bands = false;
@@ -599,6 +628,49 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
         cycles.note = "p′/p0 at each upper peak of ε1 (a cycle's end), cycle 0 the test's start";
         add(std::move(loops));
         add(std::move(cycles));
+    }
+
+    // 11. Each probe set: its response envelope (d sigma11, d sigma22), run by run, with how
+    // far it is from an elastic one (opposite responses to opposite inputs, an ellipse).
+    for (const TestKey& key : testsOf(runs, isProbesTable)) {
+        ReportFigure f = figureOf("11_" + key.test + "_envelope",
+                                  "Response envelope, " + testLabel(key), "d_sigma11",
+                                  "d_sigma22");
+        f.xLabel = "Δσ11 [kPa]";
+        f.yLabel = "Δσ22 [kPa]";
+        f.xScale = f.yScale = 1e-3;
+        f.bands = false;
+        std::string measures;
+        for (const ReportRun& run : runs) {
+            for (const SeriesTable& t : run.tests) {
+                if (t.test != key.test) {
+                    continue;
+                }
+                const std::optional<std::vector<std::array<double, 2>>> r = probeResponses(t);
+                if (!r) {
+                    continue;
+                }
+                const ResponseEnvelope env = responseEnvelope(*r);
+                ReportLine line;
+                line.label = run.name;
+                line.test = key.test;
+                line.pressure = key.pressure;
+                for (std::size_t k = 0; k <= r->size(); ++k) { // closed: back to the first
+                    line.x.push_back((*r)[k % r->size()][0]);
+                    line.y.push_back((*r)[k % r->size()][1]);
+                }
+                line.sd.assign(line.y.size(), 0.0);
+                line.runs.assign(line.y.size(), 1);
+                f.lines.push_back(std::move(line));
+                measures += fmt::format("{}{}: asymmetry {:.3g}, ellipse residual {:.3g}",
+                                        measures.empty() ? "" : "; ", run.name, env.asymmetry,
+                                        env.ellipseResidual);
+            }
+        }
+        f.note = "responses to strain increments in evenly spread directions, each minus the "
+                 "drift of the zero probe (0 for an elastic response: " +
+                 measures + ")";
+        add(std::move(f));
     }
     return figures;
 }
@@ -715,7 +787,7 @@ PooledFitScatter pooledFitOverRuns(const std::vector<ReportRun>& runs) {
     for (const ReportRun& r : runs) {
         std::vector<double> x, y;
         for (const SeriesTable& t : r.tests) {
-            if (!isCyclicTable(t)) {
+            if (isMonotonicTable(t)) {
                 appendFitRecords(t, x, y);
             }
         }
