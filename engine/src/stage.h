@@ -5,8 +5,9 @@
 //
 // Each stage kind is a class of its own file pair (stage_*.h): compaction (stage_compaction.h)
 // and re-equilibration (stage_equilibration.h), both waiting for equilibrium
-// (stage_equilibrium.h), and the tests that strain axis 1 monotonically while axis 2 follows
-// their path: drained, constant volume, constant p, linear stress path (stage_monotonic_test.h). The
+// (stage_equilibrium.h), the tests that strain axis 1 monotonically while axis 2 follows their
+// path: drained, constant volume, constant p, linear stress path (stage_monotonic_test.h), cyclic
+// loading (stage_cyclic.h) and stress probes (stage_probes.h). The
 // generated assembly is made by stage_generation.h. A stage owns:
 //  - how it drives the cell: start() sets each axis's control (Simulation::setAxisControl); a
 //    test that changes them during its course does so in handleEvents();
@@ -20,10 +21,11 @@
 //    stored beside the checkpoint (the state at the running peak);
 //  - its share of the progress estimate (share(), progress_estimate.h).
 //
-// A new test kind (constant volume, cyclic, probes, ...) is a new StageKind value
-// (grainlab/stage_kind.h), a class like MonotonicTestStage in its own stage_*.{h,cpp}, a case in
-// makeStage() and experimentPlan() below, and the experiment file's key that selects it
-// (experiment_file.cpp). The runner itself does not change.
+// A new test kind (simple shear, ...) is a new StageKind value (grainlab/stage_kind.h) that
+// isTestStage() counts, a class deriving from TestStage (below) in its own stage_*.{h,cpp} like
+// MonotonicTestStage, CyclicStage and ProbesStage, a case in makeStage(), stageKindOf() and
+// experimentPlan() below, and its kind and keys in the reader of the experiment file's `test`
+// (loading_path.cpp). The runner itself does not change.
 //
 // Called on the thread that drives the runner; one virtual call per stage event, none per step.
 
@@ -113,6 +115,31 @@ public:
 
 private:
     PlannedStage planned_;
+};
+
+/// What every test stage shares: it is a test (its eps1 is the test's), it ends with a
+/// checkpoint of its own, and N_vi, the void count of its first record, is the reference of its
+/// void-count columns (saved as voids_at_start).
+class TestStage : public Stage {
+public:
+    using Stage::Stage;
+    bool isTest() const override { return true; }
+    bool checkpointAtEnd() const override { return true; }
+    double initialVoidCount(const MeasureSet& measures) override {
+        if (voidsAtStart_ < 0) {
+            voidsAtStart_ = measures.voidCells.voidCount;
+        }
+        return voidsAtStart_;
+    }
+
+protected:
+    /// For start(): N_vi is taken again at the first record.
+    void forgetInitialVoids() { voidsAtStart_ = -1; }
+    void saveInitialVoids(RunnerState& state) const { state.voidsAtStart = voidsAtStart_; }
+    void restoreInitialVoids(const RunnerState& state) { voidsAtStart_ = state.voidsAtStart; }
+
+private:
+    double voidsAtStart_ = -1; ///< N_vi of the test; -1 before its first record
 };
 
 /// The stage object for a plan entry.

@@ -23,7 +23,7 @@ void CyclicStage::start(RunContext& ctx) {
     const ExperimentConfig& config = ctx.config;
     ctx.stageStartStep = ctx.sim->stepCount();
     ctx.setStrainReference();
-    voidsAtStart_ = -1;
+    forgetInitialVoids();
     driveAxis(ctx, 0);
     if (path(ctx).drainage == LoadingPath::Drainage::ConstantVolume) {
         AxisControl area{AxisMode::ConstantArea};
@@ -106,16 +106,9 @@ bool CyclicStage::handleEvents(RunContext& ctx) {
     return false;
 }
 
-double CyclicStage::initialVoidCount(const MeasureSet& measures) {
-    if (voidsAtStart_ < 0) {
-        voidsAtStart_ = measures.voidCells.voidCount;
-    }
-    return voidsAtStart_;
-}
-
 void CyclicStage::save(RunnerState& state, const RunContext& ctx) const {
     (void)ctx;
-    state.voidsAtStart = voidsAtStart_;
+    saveInitialVoids(state);
     state.peak.reset();
 }
 
@@ -123,7 +116,7 @@ void CyclicStage::restore(const RunnerState& state, const RunContext& ctx,
                           const SimulationState& resumed, std::optional<SimulationState> peak) {
     (void)resumed;
     (void)peak;
-    voidsAtStart_ = state.voidsAtStart;
+    restoreInitialVoids(state);
     // p0: the test's first record, the first row of this stage's kind in its series.
     const SeriesTable& t = ctx.series.at(std::size_t(ctx.currentSeries));
     const std::string kind = stageKindName(StageKind::Cyclic);

@@ -19,15 +19,12 @@
 
 namespace grainlab {
 
-class CyclicStage final : public Stage {
+class CyclicStage final : public TestStage {
 public:
-    using Stage::Stage;
-    bool isTest() const override { return true; }
+    using TestStage::TestStage;
     void start(RunContext& ctx) override;
     std::int64_t stepsToNextEvent(const RunContext& ctx) const override;
     bool handleEvents(RunContext& ctx) override;
-    bool checkpointAtEnd() const override { return true; }
-    double initialVoidCount(const MeasureSet& measures) override;
     void save(RunnerState& state, const RunContext& ctx) const override;
     void restore(const RunnerState& state, const RunContext& ctx, const SimulationState& resumed,
                  std::optional<SimulationState> runningPeak) override;
@@ -42,7 +39,6 @@ private:
     /// The stop criterion at the record just made: the notice's text, or "".
     std::string stopReason(const RunContext& ctx) const;
 
-    double voidsAtStart_ = -1; ///< N_vi of the test; -1 before its first record
     double p0_ = 0;            ///< p at the test's first record [Pa]
 };
 

@@ -36,7 +36,7 @@ void MonotonicTestStage::start(RunContext& ctx) {
     const ExperimentConfig& config = ctx.config;
     ctx.stageStartStep = ctx.sim->stepCount();
     ctx.setStrainReference();
-    voidsAtStart_ = -1;
+    forgetInitialVoids();
     peak_ = RunningPeak{};
     const double dt = config.parameters.timeStep;
     ctx.sim->setAxisControl(
@@ -83,13 +83,6 @@ bool MonotonicTestStage::handleEvents(RunContext& ctx) {
 void MonotonicTestStage::finish(RunContext& ctx) {
     peakCheckpoint(ctx);
     peak_ = RunningPeak{};
-}
-
-double MonotonicTestStage::initialVoidCount(const MeasureSet& measures) {
-    if (voidsAtStart_ < 0) {
-        voidsAtStart_ = measures.voidCells.voidCount;
-    }
-    return voidsAtStart_;
 }
 
 /// At a record, before a checkpoint of the same step: a new maximum of q/p keeps a copy of the
@@ -150,7 +143,7 @@ void MonotonicTestStage::addToCheckpoint(CheckpointData& data) {
 }
 
 void MonotonicTestStage::save(RunnerState& state, const RunContext& ctx) const {
-    state.voidsAtStart = voidsAtStart_;
+    saveInitialVoids(state);
     state.peak.reset();
     if (peak_.active) {
         RunningPeakRecord r = peak_.at;
@@ -166,7 +159,7 @@ void MonotonicTestStage::save(RunnerState& state, const RunContext& ctx) const {
 void MonotonicTestStage::restore(const RunnerState& state, const RunContext& ctx,
                                 const SimulationState& resumed,
                                 std::optional<SimulationState> kept) {
-    voidsAtStart_ = state.voidsAtStart;
+    restoreInitialVoids(state);
     if (!state.peak) {
         return;
     }

@@ -22,16 +22,13 @@
 
 namespace grainlab {
 
-class MonotonicTestStage final : public Stage {
+class MonotonicTestStage final : public TestStage {
 public:
-    using Stage::Stage;
-    bool isTest() const override { return true; }
+    using TestStage::TestStage;
     void start(RunContext& ctx) override;
     std::int64_t stepsToNextEvent(const RunContext& ctx) const override;
     bool handleEvents(RunContext& ctx) override;
     void finish(RunContext& ctx) override;
-    bool checkpointAtEnd() const override { return true; }
-    double initialVoidCount(const MeasureSet& measures) override;
     void addToCheckpoint(CheckpointData& data) override;
     void save(RunnerState& state, const RunContext& ctx) const override;
     void restore(const RunnerState& state, const RunContext& ctx, const SimulationState& resumed,
@@ -57,7 +54,6 @@ private:
     void trackPeak(RunContext& ctx);
     void peakCheckpoint(RunContext& ctx);
 
-    double voidsAtStart_ = -1; ///< N_vi at the test's first record; -1 before it
     RunningPeak peak_;
 };
 

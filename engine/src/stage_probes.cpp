@@ -22,7 +22,7 @@ void ProbesStage::start(RunContext& ctx) {
         std::make_shared<const std::vector<double>>(ctx.sim->stateRef().grains.theta);
     ctx.stageStartStep = ctx.sim->stepCount();
     ctx.setStrainReference();
-    voidsAtStart_ = -1;
+    forgetInitialVoids();
     base_ = ctx.sim->state();
     ctx.recordNow(); // the start
     probe_ = -1;     // first the zero probe: the drift of the start state over a probe's steps
@@ -68,13 +68,6 @@ bool ProbesStage::handleEvents(RunContext& ctx) {
     return false;
 }
 
-double ProbesStage::initialVoidCount(const MeasureSet& measures) {
-    if (voidsAtStart_ < 0) {
-        voidsAtStart_ = measures.voidCells.voidCount;
-    }
-    return voidsAtStart_;
-}
-
 void ProbesStage::addToCheckpoint(CheckpointData& data) {
     if (keptIn_.empty()) {
         data.runningPeak = &base_; // the first checkpoint of the stage keeps the start state
@@ -84,7 +77,7 @@ void ProbesStage::addToCheckpoint(CheckpointData& data) {
 
 void ProbesStage::save(RunnerState& state, const RunContext& ctx) const {
     (void)ctx;
-    state.voidsAtStart = voidsAtStart_;
+    saveInitialVoids(state);
     state.probe = probe_;
     state.probeStartStep = probeStart_;
     state.peak.reset();
@@ -95,7 +88,7 @@ void ProbesStage::save(RunnerState& state, const RunContext& ctx) const {
 
 void ProbesStage::restore(const RunnerState& state, const RunContext& ctx,
                           const SimulationState& resumed, std::optional<SimulationState> kept) {
-    voidsAtStart_ = state.voidsAtStart;
+    restoreInitialVoids(state);
     probe_ = state.probe;
     probeStart_ = state.probeStartStep;
     if (!state.peak || !kept) {

@@ -25,10 +25,9 @@
 
 namespace grainlab {
 
-class ProbesStage final : public Stage {
+class ProbesStage final : public TestStage {
 public:
-    using Stage::Stage;
-    bool isTest() const override { return true; }
+    using TestStage::TestStage;
     void start(RunContext& ctx) override;
     std::int64_t stepsToNextEvent(const RunContext& ctx) const override;
     bool handleEvents(RunContext& ctx) override;
@@ -37,8 +36,6 @@ public:
         (void)ctx;
         keptIn_.clear();
     }
-    bool checkpointAtEnd() const override { return true; }
-    double initialVoidCount(const MeasureSet& measures) override;
     void addToCheckpoint(CheckpointData& data) override;
     void save(RunnerState& state, const RunContext& ctx) const override;
     void restore(const RunnerState& state, const RunContext& ctx, const SimulationState& resumed,
@@ -56,7 +53,6 @@ private:
     std::string keptIn_;       ///< the checkpoint keeping base_ beside it
     int probe_ = 0;            ///< the probe under way; -1: the zero probe
     std::int64_t probeStart_ = 0;
-    double voidsAtStart_ = -1;
 };
 
 } // namespace grainlab

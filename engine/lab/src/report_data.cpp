@@ -239,6 +239,20 @@ std::optional<std::vector<std::array<double, 2>>> probeResponses(const SeriesTab
     return out;
 }
 
+/// One run's points of a test as a line of its own (no scatter: one run at each point).
+ReportLine runLine(const ReportRun& run, const TestKey& key, std::vector<double> x,
+                   std::vector<double> y) {
+    ReportLine line;
+    line.label = run.name;
+    line.test = key.test;
+    line.pressure = key.pressure;
+    line.x = std::move(x);
+    line.y = std::move(y);
+    line.sd.assign(line.y.size(), 0.0);
+    line.runs.assign(line.y.size(), 1);
+    return line;
+}
+
 /// A figure of `yColumn` against `xColumn`, labelled as a paper would (axisLabelOf).
 ReportFigure figureOf(std::string name, std::string title, const std::string& xColumn,
                       const std::string& yColumn) {
@@ -589,21 +603,8 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
                 if (q.x.empty()) {
                     continue;
                 }
-                ReportLine loop;
-                loop.label = run.name;
-                loop.test = key.test;
-                loop.pressure = key.pressure;
-                loop.x = q.x;
-                loop.y = q.y;
-                loop.sd.assign(q.y.size(), 0.0);
-                loop.runs.assign(q.y.size(), 1);
-                loops.lines.push_back(std::move(loop));
-                ReportLine decay;
-                decay.label = run.name;
-                decay.test = key.test;
-                decay.pressure = key.pressure;
-                decay.x = {0.0};
-                decay.y = {1.0};
+                loops.lines.push_back(runLine(run, key, q.x, q.y));
+                std::vector<double> cycle{0.0}, ratio{1.0};
                 const double p0 = p.y.front();
                 // The upper peaks: reversals 0, 2, 4, ..., and the last record when the test
                 // ended on one (a test that made all its cycles ends at an upper peak).
@@ -617,12 +618,10 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
                     peaks.push_back(q.x.size() - 1);
                 }
                 for (std::size_t k = 1; k < peaks.size(); ++k) {
-                    decay.x.push_back(double(k));
-                    decay.y.push_back(p0 > 0 ? p.y[peaks[k]] / p0 : 0.0);
+                    cycle.push_back(double(k));
+                    ratio.push_back(p0 > 0 ? p.y[peaks[k]] / p0 : 0.0);
                 }
-                decay.sd.assign(decay.y.size(), 0.0);
-                decay.runs.assign(decay.y.size(), 1);
-                cycles.lines.push_back(std::move(decay));
+                cycles.lines.push_back(runLine(run, key, std::move(cycle), std::move(ratio)));
             }
         }
         cycles.note = "p′/p0 at each upper peak of ε1 (a cycle's end), cycle 0 the test's start";
@@ -651,17 +650,12 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
                     continue;
                 }
                 const ResponseEnvelope env = responseEnvelope(*r);
-                ReportLine line;
-                line.label = run.name;
-                line.test = key.test;
-                line.pressure = key.pressure;
+                std::vector<double> x, y;
                 for (std::size_t k = 0; k <= r->size(); ++k) { // closed: back to the first
-                    line.x.push_back((*r)[k % r->size()][0]);
-                    line.y.push_back((*r)[k % r->size()][1]);
+                    x.push_back((*r)[k % r->size()][0]);
+                    y.push_back((*r)[k % r->size()][1]);
                 }
-                line.sd.assign(line.y.size(), 0.0);
-                line.runs.assign(line.y.size(), 1);
-                f.lines.push_back(std::move(line));
+                f.lines.push_back(runLine(run, key, std::move(x), std::move(y)));
                 measures += fmt::format("{}{}: asymmetry {:.3g}, ellipse residual {:.3g}",
                                         measures.empty() ? "" : "; ", run.name, env.asymmetry,
                                         env.ellipseResidual);

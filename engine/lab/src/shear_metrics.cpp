@@ -17,6 +17,17 @@ bool isTestName(const std::string& kind) {
     return k && isTestStage(*k);
 }
 
+/// The row of `rows` where `column` is largest (the first of equal maxima).
+std::size_t rowOfLargest(const SeriesTable& t, const std::vector<std::size_t>& rows, int column) {
+    std::size_t best = rows.front();
+    for (std::size_t k : rows) {
+        if (t.rows[k][std::size_t(column)] > t.rows[best][std::size_t(column)]) {
+            best = k;
+        }
+    }
+    return best;
+}
+
 /// Column `name` at row k, or nothing when the table has no such column.
 std::optional<double> cell(const SeriesTable& t, int column, std::size_t k) {
     if (column < 0) {
@@ -86,12 +97,7 @@ ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
     const int phi = test.column("phi_deg"), di = test.column("DI");
     const int s22 = test.column("sigma22"), iuf = test.column("I_uf");
     if (ratio >= 0 && eps1 >= 0) {
-        std::size_t peak = rows.front();
-        for (std::size_t k : rows) {
-            if (test.rows[k][std::size_t(ratio)] > test.rows[peak][std::size_t(ratio)]) {
-                peak = k;
-            }
-        }
+        const std::size_t peak = rowOfLargest(test, rows, ratio);
         m.peakStressRatio = cell(test, ratio, peak);
         m.peakAxialStrain = cell(test, eps1, peak);
         m.peakFrictionAngle = cell(test, phi, peak);
@@ -134,12 +140,7 @@ ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
 
     const int qc = test.column("q"), pc = test.column("p");
     if (qc >= 0 && pc >= 0) {
-        std::size_t peak = rows.front();
-        for (std::size_t k : rows) {
-            if (test.rows[k][std::size_t(qc)] > test.rows[peak][std::size_t(qc)]) {
-                peak = k;
-            }
-        }
+        const std::size_t peak = rowOfLargest(test, rows, qc);
         m.peakDeviator = cell(test, qc, peak);
         m.meanStressAtPeakDeviator = cell(test, pc, peak);
         const Curve qCurve = shearCurve(test, "q"), pCurve = shearCurve(test, "p");
