@@ -439,13 +439,7 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
                                                   "version (available: \"strain\")",
                                                   at));
         }
-        if (t.kind == LoadingPath::Kind::Cyclic && t.control == LoadingPath::Control::Stress) {
-            throw ExperimentFileError(sourceName, at + "control",
-                                      fmt::format("{}control = \"stress\": not available in "
-                                                  "this version (available: \"strain\")",
-                                                  at));
-        }
-        if (t.kind == LoadingPath::Kind::Cyclic &&
+        if (t.kind == LoadingPath::Kind::Cyclic && t.control == LoadingPath::Control::Strain &&
             !(config.shear.axialStrainPerStep <= t.amplitude)) {
             throw ExperimentFileError(
                 sourceName, at + "amplitude",

@@ -45,6 +45,10 @@ std::string runnerStateText(const RunnerState& s) {
         j["probe"] = s.probe;
         j["probe_start_step"] = s.probeStartStep;
     }
+    if (s.cyclicDirection != 0) { // a stress-controlled cyclic test's only
+        j["cyclic_direction"] = s.cyclicDirection;
+        j["cyclic_reversals"] = s.cyclicReversals;
+    }
     if (s.peak) {
         nlohmann::json p;
         p["q_over_p"] = s.peak->stressRatio;
@@ -89,6 +93,10 @@ RunnerState parseRunnerState(const std::string& text) {
     }
     if (j.contains("unbalanced_low")) {
         s.unbalancedLow = j.at("unbalanced_low").get<std::array<double, 4>>();
+    }
+    if (j.contains("cyclic_direction")) {
+        s.cyclicDirection = j.at("cyclic_direction");
+        s.cyclicReversals = j.at("cyclic_reversals");
     }
     if (j.contains("probe")) {
         s.probe = j.at("probe");

@@ -56,6 +56,9 @@ struct RunnerState {
     // start state is kept beside a checkpoint like a running peak (peak.kept_in).
     int probe = 0;
     std::int64_t probeStartStep = 0;
+    // A stress-controlled cyclic test (stage_cyclic.h): the axial direction and the reversals.
+    int cyclicDirection = 0;
+    std::int64_t cyclicReversals = 0;
 };
 
 /// The JSON text of a runner state.

@@ -1,6 +1,7 @@
 #include "stage_cyclic.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -12,10 +13,14 @@ CyclicStrainSchedule CyclicStage::schedule(const RunContext& ctx) const {
                                 ctx.config.shear.axialStrainPerStep);
 }
 
+bool CyclicStage::stressControl(const RunContext& ctx) const {
+    return path(ctx).control == LoadingPath::Control::Stress;
+}
+
 void CyclicStage::driveAxis(RunContext& ctx, std::int64_t n) const {
+    const int direction = stressControl(ctx) ? direction_ : schedule(ctx).direction(n);
     const double rate =
-        schedule(ctx).direction(n) * ctx.config.shear.axialStrainPerStep /
-        ctx.config.parameters.timeStep;
+        direction * ctx.config.shear.axialStrainPerStep / ctx.config.parameters.timeStep;
     ctx.sim->setAxisControl(0, {AxisMode::Strain, rate, 0.0, ctx.length1At0});
 }
 
@@ -24,6 +29,8 @@ void CyclicStage::start(RunContext& ctx) {
     ctx.stageStartStep = ctx.sim->stepCount();
     ctx.setStrainReference();
     forgetInitialVoids();
+    direction_ = stressControl(ctx) ? 1 : 0; // q rises first
+    reversals_ = 0;
     driveAxis(ctx, 0);
     if (path(ctx).drainage == LoadingPath::Drainage::ConstantVolume) {
         AxisControl area{AxisMode::ConstantArea};
@@ -43,6 +50,9 @@ void CyclicStage::start(RunContext& ctx) {
 
 std::int64_t CyclicStage::stepsToNextEvent(const RunContext& ctx) const {
     const std::int64_t now = ctx.sim->stepCount();
+    if (stressControl(ctx)) { // reversals are decided at records
+        return std::max<std::int64_t>(1, std::min(ctx.nextRecordStep, ctx.nextSnapshotStep) - now);
+    }
     const std::int64_t n = now - ctx.stageStartStep;
     const CyclicStrainSchedule s = schedule(ctx);
     // The next reversal after step n (reversal k at first_ + k half_).
@@ -57,26 +67,70 @@ std::int64_t CyclicStage::stepsToNextEvent(const RunContext& ctx) const {
 
 std::string CyclicStage::stopReason(const RunContext& ctx) const {
     const LoadingPath& p = path(ctx);
+    const SeriesTable& t = ctx.series[std::size_t(ctx.currentSeries)];
+    if (p.stopStrainAmplitude && std::fabs(ctx.eps1()) > *p.stopStrainAmplitude) {
+        return fmt::format("{} stopped after {} reversals ({:g} cycles): |eps1| = {:.4g} exceeded "
+                           "{:g} (test.stop_strain_amplitude): the sample no longer holds the "
+                           "cycle of q",
+                           test(), reversals_, 0.5 * double(reversals_), std::fabs(ctx.eps1()),
+                           *p.stopStrainAmplitude);
+    }
     if (!p.stopPressureFraction) {
         return "";
     }
-    const SeriesTable& t = ctx.series[std::size_t(ctx.currentSeries)];
     const double pNow = t.rows.back()[std::size_t(t.column("p"))];
     if (!(pNow < *p.stopPressureFraction * p0_)) {
         return "";
     }
     const std::int64_t n = ctx.sim->stepCount() - ctx.stageStartStep;
-    const CyclicStrainSchedule s = schedule(ctx);
-    const std::int64_t reversals = n < s.firstLegSteps()
-                                       ? 0
-                                       : (n - s.firstLegSteps()) / s.halfCycleSteps() + 1;
+    std::int64_t reversals = reversals_;
+    if (!stressControl(ctx)) {
+        const CyclicStrainSchedule s = schedule(ctx);
+        reversals =
+            n < s.firstLegSteps() ? 0 : (n - s.firstLegSteps()) / s.halfCycleSteps() + 1;
+    }
     return fmt::format("{} stopped at step {} of the test ({} reversals, {:g} cycles): p' = {:.4g} "
                        "Pa fell below {:g} p0 = {:.4g} Pa (test.stop_pressure_fraction)",
                        test(), n, reversals, 0.5 * double(reversals), pNow,
                        *p.stopPressureFraction, *p.stopPressureFraction * p0_);
 }
 
+bool CyclicStage::handleStressControlled(RunContext& ctx) {
+    const std::int64_t now = ctx.sim->stepCount();
+    if (now >= ctx.nextRecordStep) {
+        ctx.recordNow();
+        ctx.nextRecordStep = now + ctx.strideOf(ctx.config.record.strainInterval);
+        if (const std::string reason = stopReason(ctx); !reason.empty()) {
+            ctx.warn("test_end", reason);
+            return true;
+        }
+        // q past its bound: the strain turns back. Reversal 2N, at the upper bound, ends the
+        // N-th cycle (a cycle: from one upper reversal to the next).
+        const LoadingPath& p = path(ctx);
+        const SeriesTable& t = ctx.series[std::size_t(ctx.currentSeries)];
+        const double q = t.rows.back()[std::size_t(t.column("q"))];
+        const int next = cyclicStressDirection(q, direction_, p.mean - p.amplitude,
+                                               p.mean + p.amplitude);
+        if (next != direction_) {
+            if (reversals_ == 2 * p.cycles) {
+                return true;
+            }
+            direction_ = next;
+            ++reversals_;
+            driveAxis(ctx, 0);
+        }
+    }
+    if (now >= ctx.nextSnapshotStep) {
+        ctx.checkpoint(ctx.checkpointLabel());
+        ctx.nextSnapshotStep = now + ctx.strideOf(ctx.config.record.snapshotStrainInterval);
+    }
+    return false;
+}
+
 bool CyclicStage::handleEvents(RunContext& ctx) {
+    if (stressControl(ctx)) {
+        return handleStressControlled(ctx);
+    }
     const std::int64_t now = ctx.sim->stepCount();
     const std::int64_t n = now - ctx.stageStartStep;
     const CyclicStrainSchedule s = schedule(ctx);
@@ -109,6 +163,8 @@ bool CyclicStage::handleEvents(RunContext& ctx) {
 void CyclicStage::save(RunnerState& state, const RunContext& ctx) const {
     (void)ctx;
     saveInitialVoids(state);
+    state.cyclicDirection = direction_;
+    state.cyclicReversals = reversals_;
     state.peak.reset();
 }
 
@@ -117,6 +173,8 @@ void CyclicStage::restore(const RunnerState& state, const RunContext& ctx,
     (void)resumed;
     (void)peak;
     restoreInitialVoids(state);
+    direction_ = state.cyclicDirection;
+    reversals_ = state.cyclicReversals;
     // p0: the test's first record, the first row of this stage's kind in its series.
     const SeriesTable& t = ctx.series.at(std::size_t(ctx.currentSeries));
     const std::string kind = stageKindName(StageKind::Cyclic);
@@ -132,6 +190,11 @@ void CyclicStage::restore(const RunnerState& state, const RunContext& ctx,
 
 StageShare CyclicStage::share(const ExperimentConfig& config) const {
     const LoadingPath& p = config.tests[std::size_t(testIndex())];
+    if (p.control == LoadingPath::Control::Stress) {
+        // Its length is the sample's to decide: a guess of 0.2 % of strain per half cycle, and
+        // the estimate creeps on beyond it.
+        return {double(2 * p.cycles * strideOf(config, 0.002)), true};
+    }
     const CyclicStrainSchedule s(0.0, p.mean, p.amplitude, config.shear.axialStrainPerStep);
     return {double(s.reversalStep(2 * p.cycles)), false};
 }

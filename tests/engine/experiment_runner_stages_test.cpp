@@ -582,5 +582,67 @@ TEST(ExperimentRunnerStages, AtSmallIncrementsProbesOfAFrictionlessSampleAreElas
     EXPECT_LT(env.ellipseResidual, kElasticTolerance);
 }
 
+TEST(ExperimentRunnerStages, AStressControlledCyclicTestReversesWithinOneRecordOfEachBound) {
+    // q cycled between -3 and +3 kPa, drained, two cycles: each reversal comes at the first
+    // record past a bound.
+    const ExperimentConfig config = withTests(nlohmann::json::parse(
+        R"({"kind": "cyclic", "control": "stress", "amplitude": 3000, "cycles": 2})"));
+    MemoryOutput out;
+    ExperimentRunner runner(config, &out);
+    runAll(runner);
+    const SeriesTable& t = runner.series().back();
+    const auto rows = testRows(t);
+    std::vector<double> eps1, q;
+    for (std::size_t r : rows) {
+        eps1.push_back(column(t, r, "eps1"));
+        q.push_back(column(t, r, "q"));
+    }
+    const std::vector<std::size_t> turns = reversalIndices(eps1);
+    ASSERT_EQ(turns.size(), 4u); // 2N
+    for (std::size_t k = 0; k < turns.size(); ++k) {
+        const std::size_t at = turns[k];
+        if (k % 2 == 0) { // upper bound
+            EXPECT_GE(q[at], 3000.0) << "reversal " << k;
+            EXPECT_LT(q[at - 1], 3000.0) << "reversal " << k << " came a record late";
+        } else {
+            EXPECT_LE(q[at], -3000.0) << "reversal " << k;
+            EXPECT_GT(q[at - 1], -3000.0) << "reversal " << k << " came a record late";
+        }
+    }
+    // It ends at the record where q passes the upper bound a third time.
+    EXPECT_GE(q.back(), 3000.0);
+    EXPECT_LT(q[q.size() - 2], 3000.0);
+    for (const RunWarning& w : runner.warnings()) {
+        EXPECT_NE(w.kind, "test_end") << w.text;
+    }
+    // Resumed from a checkpoint after its first reversal, it ends the same.
+    const Kept* middle = nullptr;
+    for (const Kept& k : out.kept) {
+        if (k.identity.kind == "cyclic" && !k.runnerState.empty() &&
+            parseRunnerState(k.runnerState).cyclicReversals == 1 && !middle) {
+            middle = &k;
+        }
+    }
+    ASSERT_NE(middle, nullptr);
+    MemoryOutput again;
+    ExperimentRunner resumed(config, out.resumeFrom(*middle), &again);
+    runAll(resumed);
+    EXPECT_EQ(resumed.series().back().rows, t.rows);
+
+    // A bound the sample cannot reach: the strain runs on until stop_strain_amplitude stops it.
+    const ExperimentConfig unreachable = withTests(nlohmann::json::parse(
+        R"({"kind": "cyclic", "control": "stress", "amplitude": 1e6, "cycles": 2,
+            "stop_strain_amplitude": 0.001})"));
+    ExperimentRunner far(unreachable);
+    while (far.advance(20000)) {
+    }
+    const SeriesTable& ft = far.series().back();
+    EXPECT_GT(column(ft, ft.rows.size() - 1, "eps1"), 0.001);
+    EXPECT_LT(column(ft, ft.rows.size() - 2, "eps1"), 0.001 + 1e-12);
+    ASSERT_FALSE(far.warnings().empty());
+    EXPECT_EQ(far.warnings().back().kind, "test_end");
+    EXPECT_NE(far.warnings().back().text.find("test.stop_strain_amplitude"), std::string::npos);
+}
+
 } // namespace
 } // namespace grainlab
