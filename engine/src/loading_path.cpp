@@ -142,6 +142,9 @@ LoadingPath readTest(const JsonSection& t) {
         if (t.has("stop_strain_amplitude")) {
             path.stopStrainAmplitude =
                 t.number("stop_strain_amplitude", openClosed(0.0, kMaxStrain), std::nullopt);
+        } else if (path.control == LoadingPath::Control::Stress) {
+            // A bound of q the sample cannot reach would strain it without end.
+            path.stopStrainAmplitude = kMaxStrain;
         }
         if (t.has("stop_pressure_fraction")) {
             path.stopPressureFraction =

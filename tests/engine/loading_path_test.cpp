@@ -36,7 +36,7 @@ TEST(LoadingPathReader, EachKindAndItsDefaults) {
     EXPECT_EQ(c.amplitude, 0.002);
     EXPECT_EQ(c.mean, 0.0);
     EXPECT_EQ(c.cycles, 10);
-    EXPECT_FALSE(c.stopStrainAmplitude.has_value());
+    EXPECT_FALSE(c.stopStrainAmplitude.has_value()); // strain control: the amplitude is imposed
     EXPECT_FALSE(c.stopPressureFraction.has_value());
 
     const LoadingPath cs = read(R"({"test": {"kind": "cyclic", "control": "stress",
@@ -48,6 +48,10 @@ TEST(LoadingPathReader, EachKindAndItsDefaults) {
     EXPECT_EQ(cs.mean, 1e4);
     EXPECT_EQ(cs.cycles, 50);
     EXPECT_EQ(cs.stopStrainAmplitude, 0.05);
+    // Under stress control a bound the sample cannot reach must still end the test.
+    EXPECT_EQ(read(R"({"test": {"kind": "cyclic", "control": "stress", "amplitude": 1e4}})")
+                  .stopStrainAmplitude,
+              0.5);
     EXPECT_EQ(cs.stopPressureFraction, 0.1);
 
     const LoadingPath p = read(R"({"test": {"kind": "probes"}})");

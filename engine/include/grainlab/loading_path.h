@@ -37,7 +37,8 @@ struct LoadingPath {
     double amplitude = 0;     ///< eps1 amplitude [-] (strain control) or q amplitude [Pa] (stress)
     double mean = 0;          ///< mean eps1 [-] (strain control) or mean q [Pa] (stress control)
     std::int64_t cycles = 10; ///< stop after this many cycles
-    std::optional<double> stopStrainAmplitude;  ///< stop when |eps1 - mean| exceeds it [-]
+    /// Stress control: stop when |eps1| exceeds it (0.5 when the file gives none) [-]
+    std::optional<double> stopStrainAmplitude;
     std::optional<double> stopPressureFraction; ///< stop when p' < fraction p0 [-]
 
     // Probes.
