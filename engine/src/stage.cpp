@@ -6,9 +6,9 @@
 
 #include "stage_compaction.h"
 #include "stage_cyclic.h"
-#include "stage_probes.h"
-#include "stage_monotonic_test.h"
 #include "stage_equilibration.h"
+#include "stage_monotonic_test.h"
+#include "stage_probes.h"
 
 namespace grainlab {
 
@@ -27,8 +27,8 @@ StageKind stageKindOf(const LoadingPath& path) {
     case LoadingPath::Kind::Probes:
         return StageKind::Probes;
     }
-    throw std::invalid_argument(fmt::format("experiment: tests of kind {} are not available",
-                                            loadingKindName(path.kind)));
+    throw std::invalid_argument(
+        fmt::format("experiment: tests of kind {} are not available", loadingKindName(path.kind)));
 }
 
 std::vector<PlannedStage> experimentPlan(const ExperimentConfig& config) {
@@ -47,8 +47,7 @@ std::vector<PlannedStage> experimentPlan(const ExperimentConfig& config) {
             if (j == 0 || config.tests[j].kind != LoadingPath::Kind::Probes) {
                 plan.push_back({StageKind::Equilibration, index, pressures[k], int(j), series});
             }
-            plan.push_back(
-                {stageKindOf(config.tests[j]), index, pressures[k], int(j), series});
+            plan.push_back({stageKindOf(config.tests[j]), index, pressures[k], int(j), series});
         }
     }
     return plan;

@@ -56,9 +56,7 @@ std::int64_t CyclicStage::stepsToNextEvent(const RunContext& ctx) const {
     const std::int64_t n = now - ctx.stageStartStep;
     const CyclicStrainSchedule s = schedule(ctx);
     // The next reversal after step n (reversal k at first_ + k half_).
-    std::int64_t k = n < s.firstLegSteps()
-                         ? 0
-                         : (n - s.firstLegSteps()) / s.halfCycleSteps() + 1;
+    std::int64_t k = n < s.firstLegSteps() ? 0 : (n - s.firstLegSteps()) / s.halfCycleSteps() + 1;
     const std::int64_t reversal = ctx.stageStartStep + s.reversalStep(k);
     const std::int64_t end = ctx.stageStartStep + s.reversalStep(2 * path(ctx).cycles);
     return std::max<std::int64_t>(
@@ -86,13 +84,12 @@ std::string CyclicStage::stopReason(const RunContext& ctx) const {
     std::int64_t reversals = reversals_;
     if (!stressControl(ctx)) {
         const CyclicStrainSchedule s = schedule(ctx);
-        reversals =
-            n < s.firstLegSteps() ? 0 : (n - s.firstLegSteps()) / s.halfCycleSteps() + 1;
+        reversals = n < s.firstLegSteps() ? 0 : (n - s.firstLegSteps()) / s.halfCycleSteps() + 1;
     }
     return fmt::format("{} stopped at step {} of the test ({} reversals, {:g} cycles): p' = {:.4g} "
                        "Pa fell below {:g} p0 = {:.4g} Pa (test.stop_pressure_fraction)",
-                       test(), n, reversals, 0.5 * double(reversals), pNow,
-                       *p.stopPressureFraction, *p.stopPressureFraction * p0_);
+                       test(), n, reversals, 0.5 * double(reversals), pNow, *p.stopPressureFraction,
+                       *p.stopPressureFraction * p0_);
 }
 
 bool CyclicStage::handleStressControlled(RunContext& ctx) {
@@ -109,8 +106,8 @@ bool CyclicStage::handleStressControlled(RunContext& ctx) {
         const LoadingPath& p = path(ctx);
         const SeriesTable& t = ctx.series[std::size_t(ctx.currentSeries)];
         const double q = t.rows.back()[std::size_t(t.column("q"))];
-        const int next = cyclicStressDirection(q, direction_, p.mean - p.amplitude,
-                                               p.mean + p.amplitude);
+        const int next =
+            cyclicStressDirection(q, direction_, p.mean - p.amplitude, p.mean + p.amplitude);
         if (next != direction_) {
             if (reversals_ == 2 * p.cycles) {
                 return true;

@@ -1,9 +1,10 @@
 #pragma once
-// A cyclic test, after the sample's re-equilibration. Strain control (test.control "strain"): axis 1 driven along the
-// triangular waveform of CyclicStrainSchedule (loading_path.h) from eps1 = 0 to mean +
-// amplitude, then between mean + amplitude and mean - amplitude, at the drained test's strain per
-// step (shear.axial_strain_per_step), reversing at exact steps; axis 2 drained (sigma22 held at
-// the confining pressure by the servo) or at constant volume (the cell's area held exactly).
+// A cyclic test, after the sample's re-equilibration. Strain control (test.control "strain"): axis
+// 1 driven along the triangular waveform of CyclicStrainSchedule (loading_path.h) from eps1 = 0 to
+// mean + amplitude, then between mean + amplitude and mean - amplitude, at the drained test's
+// strain per step (shear.axial_strain_per_step), reversing at exact steps; axis 2 drained (sigma22
+// held at the confining pressure by the servo) or at constant volume (the cell's area held
+// exactly).
 //
 // Stress control ("stress"): axis 1 compressed at the same strain per step until q at a record
 // reaches mean + amplitude, then extended until q reaches mean - amplitude, and so on: each
@@ -49,8 +50,8 @@ private:
     /// The stop criterion at the record just made: the notice's text, or "".
     std::string stopReason(const RunContext& ctx) const;
 
-    double p0_ = 0;            ///< p at the test's first record [Pa]
-    int direction_ = 0;        ///< stress control: +1 compressing, -1 extending; 0 strain control
+    double p0_ = 0;              ///< p at the test's first record [Pa]
+    int direction_ = 0;          ///< stress control: +1 compressing, -1 extending; 0 strain control
     std::int64_t reversals_ = 0; ///< stress control: reversals so far
 };
 

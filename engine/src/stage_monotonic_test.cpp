@@ -157,8 +157,8 @@ void MonotonicTestStage::save(RunnerState& state, const RunContext& ctx) const {
 /// The running peak of a resumed run: from the runner state, with the state kept in the
 /// checkpoint it names (`kept`), or the resumed state itself when the peak was at its step.
 void MonotonicTestStage::restore(const RunnerState& state, const RunContext& ctx,
-                                const SimulationState& resumed,
-                                std::optional<SimulationState> kept) {
+                                 const SimulationState& resumed,
+                                 std::optional<SimulationState> kept) {
     restoreInitialVoids(state);
     if (!state.peak) {
         return;

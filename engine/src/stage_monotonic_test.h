@@ -7,7 +7,8 @@
 //    ConstantArea), the undrained analogue;
 //  - StressPath: sigma22 servoed to P + a (sigma11 - sigma11_0) (AxisMode StressPath), P the
 //    confining pressure and sigma11_0 the axial stress at the start; ConstantP is a = -1,
-//    which keeps p = (sigma11 + sigma22) / 2 at (P + sigma11_0) / 2. Events fall on whole steps counted from its start: a record every
+//    which keeps p = (sigma11 + sigma22) / 2 at (P + sigma11_0) / 2. Events fall on whole steps
+//    counted from its start: a record every
 // record.strain_interval of eps1, a checkpoint every record.snapshot_strain_interval.
 //
 // It records N_vi at its start (the reference of the void-count columns) and tracks the running

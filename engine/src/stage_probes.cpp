@@ -11,8 +11,8 @@
 namespace grainlab {
 
 std::int64_t ProbesStage::probeSteps(const ExperimentConfig& config, const LoadingPath& path) {
-    return std::max<std::int64_t>(
-        1, std::llround(path.increment / config.shear.axialStrainPerStep));
+    return std::max<std::int64_t>(1,
+                                  std::llround(path.increment / config.shear.axialStrainPerStep));
 }
 
 void ProbesStage::start(RunContext& ctx) {
@@ -50,8 +50,8 @@ void ProbesStage::beginProbe(RunContext& ctx) {
 
 std::int64_t ProbesStage::stepsToNextEvent(const RunContext& ctx) const {
     const LoadingPath& path = ctx.config.tests[std::size_t(testIndex())];
-    return std::max<std::int64_t>(
-        1, probeStart_ + probeSteps(ctx.config, path) - ctx.sim->stepCount());
+    return std::max<std::int64_t>(1, probeStart_ + probeSteps(ctx.config, path) -
+                                         ctx.sim->stepCount());
 }
 
 bool ProbesStage::handleEvents(RunContext& ctx) {

@@ -49,9 +49,9 @@ private:
     /// Makes the simulation again from the start state and drives probe `probe_`.
     void beginProbe(RunContext& ctx);
 
-    SimulationState base_;     ///< the start state of every probe
-    std::string keptIn_;       ///< the checkpoint keeping base_ beside it
-    int probe_ = 0;            ///< the probe under way; -1: the zero probe
+    SimulationState base_; ///< the start state of every probe
+    std::string keptIn_;   ///< the checkpoint keeping base_ beside it
+    int probe_ = 0;        ///< the probe under way; -1: the zero probe
     std::int64_t probeStart_ = 0;
 };
 
