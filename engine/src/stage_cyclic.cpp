@@ -55,9 +55,7 @@ std::int64_t CyclicStage::stepsToNextEvent(const RunContext& ctx) const {
     }
     const std::int64_t n = now - ctx.stageStartStep;
     const CyclicStrainSchedule s = schedule(ctx);
-    // The next reversal after step n (reversal k at first_ + k half_).
-    std::int64_t k = n < s.firstLegSteps() ? 0 : (n - s.firstLegSteps()) / s.halfCycleSteps() + 1;
-    const std::int64_t reversal = ctx.stageStartStep + s.reversalStep(k);
+    const std::int64_t reversal = ctx.stageStartStep + s.reversalStep(s.reversalsBy(n));
     const std::int64_t end = ctx.stageStartStep + s.reversalStep(2 * path(ctx).cycles);
     return std::max<std::int64_t>(
         1, std::min({ctx.nextRecordStep, ctx.nextSnapshotStep, reversal, end}) - now);
@@ -83,8 +81,7 @@ std::string CyclicStage::stopReason(const RunContext& ctx) const {
     const std::int64_t n = ctx.sim->stepCount() - ctx.stageStartStep;
     std::int64_t reversals = reversals_;
     if (!stressControl(ctx)) {
-        const CyclicStrainSchedule s = schedule(ctx);
-        reversals = n < s.firstLegSteps() ? 0 : (n - s.firstLegSteps()) / s.halfCycleSteps() + 1;
+        reversals = schedule(ctx).reversalsBy(n);
     }
     return fmt::format("{} stopped at step {} of the test ({} reversals, {:g} cycles): p' = {:.4g} "
                        "Pa fell below {:g} p0 = {:.4g} Pa (test.stop_pressure_fraction)",
@@ -134,7 +131,7 @@ bool CyclicStage::handleEvents(RunContext& ctx) {
     const bool end = n >= s.reversalStep(2 * path(ctx).cycles);
     // Every peak of the waveform is a record too, however the record interval falls: the loops'
     // turning points are what a cyclic test is read by.
-    const bool peak = n >= s.firstLegSteps() && (n - s.firstLegSteps()) % s.halfCycleSteps() == 0;
+    const bool peak = s.isReversal(n);
     bool stopped = false;
     if (now >= ctx.nextRecordStep || end || peak) {
         ctx.recordNow();

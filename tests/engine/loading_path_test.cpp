@@ -147,6 +147,15 @@ TEST(CyclicStrainSchedule, WaveformReversalsAndCycles) {
         ASSERT_LE(s.strainAt(n), s.upperPeak() + 1e-15);
         ASSERT_GE(s.strainAt(n), s.lowerPeak() - 1e-15);
     }
+    // Reversals by brute force: n is one where the direction into n and out of n differ.
+    std::int64_t turns = 0;
+    for (std::int64_t n = 1; n < 1000; ++n) {
+        const bool turn = s.direction(n - 1) != s.direction(n);
+        ASSERT_EQ(s.isReversal(n), turn) << n;
+        turns += turn ? 1 : 0;
+        ASSERT_EQ(s.reversalsBy(n), turns) << n;
+        ASSERT_GT(s.reversalStep(s.reversalsBy(n)), n) << n; // the next one is after n
+    }
     // Starting above the upper peak, the first leg extends.
     const CyclicStrainSchedule down(0.01, 0.0, 0.002, 1e-4);
     EXPECT_EQ(down.firstLegSteps(), 80);

@@ -78,6 +78,12 @@ public:
     std::int64_t halfCycleSteps() const { return half_; } ///< steps from one peak to the other
     /// Step index of reversal k (k = 0: the first upper peak; odd k: lower peaks).
     std::int64_t reversalStep(std::int64_t k) const { return first_ + k * half_; }
+    /// Reversals at steps <= n; reversalStep(reversalsBy(n)) is the next one after n.
+    std::int64_t reversalsBy(std::int64_t n) const {
+        return n < first_ ? 0 : (n - first_) / half_ + 1;
+    }
+    /// True when the strain turns at step n.
+    bool isReversal(std::int64_t n) const { return n >= first_ && (n - first_) % half_ == 0; }
     /// Signed step count s(n): eps1(n) = eps0 + d s(n).
     std::int64_t stepCount(std::int64_t n) const;
     double strainAt(std::int64_t n) const { return eps0_ + d_ * double(stepCount(n)); }
