@@ -5,22 +5,17 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
-#include <filesystem>
 
 #include <fmt/format.h>
 
 #include "common/progress_bar.h"
-#include "common/run_cost.h"
-#include "cli/run_output.h"
+#include "cli/run_session.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
-#include "grainlab/run_file.h"
 #include "grainlab/simulation.h"
 
 namespace grainlab {
 namespace {
-
-namespace fs = std::filesystem;
 
 std::atomic<bool> interrupted{false};
 
@@ -91,83 +86,29 @@ std::string experimentRemedy(const std::exception& e) {
 int runExperimentCommand(const RunOptions& options) {
     const bool resume = !options.resume.empty();
     const std::string folder = resume ? options.resume : options.out;
-    // A new run's experiment is read and checked before its folder is created or locked: a
-    // refused experiment leaves nothing behind (reading writes nothing).
-    ExperimentConfig config;
-    if (!resume) {
-        config = readExperimentFile(options.experiment);
-    }
-    // The folder is locked before anything in it is read or written; a refusal touches nothing.
-    std::unique_ptr<RunFolderLock> lock;
-    const fs::path runFilePath = fs::path(folder) / "run.h5";
+    std::unique_ptr<RunSession> session;
     try {
-        if (resume) {
-            if (!fs::exists(runFilePath)) {
-                fmt::print(stderr, "grainlab run: --resume {}: no run file {}\n", folder,
-                           runFilePath.string());
-                return 2;
-            }
-            lock = std::make_unique<RunFolderLock>(folder, true);
-        } else {
-            if (fs::exists(RunFolderLock::path(folder))) {
-                lock = std::make_unique<RunFolderLock>(folder, false);
-            }
-            if (fs::exists(runFilePath) && !options.force) {
-                fmt::print(stderr,
-                           "grainlab run: --out {}: that folder already holds a run ({}); "
-                           "continue it with `grainlab run --resume {}`, or give --force to "
-                           "replace it\n",
-                           folder, runFilePath.string(), folder);
-                return 2;
-            }
-            if (!lock) {
-                lock = std::make_unique<RunFolderLock>(folder, true);
-            }
-        }
-    } catch (const std::runtime_error& e) {
+        // A new run's experiment is read and checked before its folder is created or locked: a
+        // refused experiment leaves nothing behind (reading writes nothing).
+        session = resume ? RunSession::resume(folder, options.threads)
+                         : RunSession::create(readExperimentFile(options.experiment), folder,
+                                              options.force, options.threads);
+    } catch (const RunFolderRefused& e) {
         fmt::print(stderr, "grainlab run: {}\n", e.what());
         return 2;
     }
-    ResumePoint point;
-    if (resume) {
-        const std::string runFile = runFilePath.string();
-        config = parseExperimentText(readExperimentText(runFile), runFile + ":/experiment");
-        point = RunOutputFolder::readResumePoint(folder);
-        if (ExperimentRunner::finishedAt(point.runnerState)) {
-            // Nothing to run: the files stay exactly as they are, but for a cost record that
-            // missed the end (the process was killed between its last checkpoint and it).
-            RunCostRecord cost = readRunCost(folder);
-            if (!cost.finished) {
-                cost.finished = true;
-                writeRunCost(folder, cost);
-            }
-            fmt::print("grainlab run: the run in {} is finished; nothing to resume (outputs in "
-                       "{})\n",
-                       folder, folder);
-            return 0;
-        }
-    } else {
-        if (options.force) {
-            removeRunFiles(folder); // the old run's files, CSVs too, do not linger
-        }
+    if (session->finishedAlready()) {
+        // Nothing to run: the files stay exactly as they are, but for a cost record that
+        // missed the end.
+        session->completeCostRecord();
+        fmt::print("grainlab run: the run in {} is finished; nothing to resume (outputs in {})\n",
+                   folder, folder);
+        return 0;
     }
-    if (options.threads > 0) {
-        config.parameters.threads = options.threads;
-    }
+    const ExperimentConfig& config = session->config();
     // Past a file size limit (ulimit -f) a write then fails with EFBIG, which the run file
     // reports and survives like a full disk, instead of SIGXFSZ killing the process.
     std::signal(SIGXFSZ, SIG_IGN);
-    RunOutputFolder output(folder, config.sourceText, resume);
-    std::unique_ptr<ExperimentRunner> runner;
-
-    // What the run costs, beside its run file (cost.json), for the study commands.
-    RunCostMeter cost(folder, resume);
-    const auto saveCost = [&](bool finished) {
-        if (runner) {
-            cost.save(runner->stepsTaken(), config.assembly.grainCount,
-                      runner->simulation().stateRef().parameters.threads, finished);
-        }
-    };
 
     interrupted.store(false);
     auto previous = std::signal(SIGINT, onInterrupt);
@@ -181,8 +122,8 @@ int runExperimentCommand(const RunOptions& options) {
     std::int64_t advanced = 0; // steps of this process (the step count restarts per test)
     try {
         // A new run writes its first checkpoint here: inside the try, as every later write.
-        runner = resume ? std::make_unique<ExperimentRunner>(config, std::move(point), &output)
-                        : std::make_unique<ExperimentRunner>(config, &output);
+        session->start();
+        const ExperimentRunner* runner = &session->runner();
         lastStep = runner->progress().step;
         // Each warning is printed once, when it is given (a resumed run's earlier ones again
         // at its start, so that the terminal shows them all).
@@ -203,7 +144,7 @@ int runExperimentCommand(const RunOptions& options) {
             if (stop.afterSteps > advanced) {
                 chunk = std::min(chunk, stop.afterSteps - advanced);
             }
-            const bool more = runner->advance(chunk);
+            const bool more = session->advance(chunk);
             advanced += chunk;
             if (advanced == stop.afterSteps) {
                 std::raise(stop.signal);
@@ -212,11 +153,8 @@ int runExperimentCommand(const RunOptions& options) {
             if (!more) {
                 break;
             }
-            cost.saveEvery(5.0, runner->stepsTaken(), config.assembly.grainCount,
-                           runner->simulation().stateRef().parameters.threads);
             if (interrupted.load()) {
-                runner->checkpointNow("interrupted");
-                saveCost(false);
+                session->interrupt();
                 bar.finish();
                 fmt::print(stderr,
                            "grainlab run: interrupted; the run file and series are valid and a "
@@ -242,8 +180,7 @@ int runExperimentCommand(const RunOptions& options) {
         if (status == 0) {
             // The run file is complete on disk before the cost record says the run is finished
             // (a study takes a finished record as a finished, readable run).
-            output.close();
-            saveCost(true);
+            session->finish();
             if (!options.quiet) {
                 bar.update(1.0, "done");
                 bar.finish();
@@ -252,14 +189,10 @@ int runExperimentCommand(const RunOptions& options) {
         }
     } catch (const std::exception& e) {
         bar.finish();
-        try {
-            saveCost(false);
-        } catch (const std::exception&) {
-            // The error below is what matters; a cost record that cannot be written is not.
-        }
+        session->saveCostAfterFailure();
         std::signal(SIGINT, previous);
         std::signal(SIGTERM, previousTerm);
-        const std::string kept = output.lastCheckpoint();
+        const std::string kept = session->lastCheckpoint();
         const std::string remedy = experimentRemedy(e);
         if (!remedy.empty()) {
             const std::string experiment =
@@ -270,25 +203,25 @@ int runExperimentCommand(const RunOptions& options) {
                        "resume would meet it again. In the experiment file (its text is also "
                        "kept in {} as /experiment): {}; then start a new run: grainlab run {} "
                        "--out NEW_FOLDER\n",
-                       e.what(), output.runFilePath(), remedy, experiment);
+                       e.what(), session->runFilePath(), remedy, experiment);
             if (!kept.empty()) {
                 fmt::print(stderr,
                            "The run file {} keeps its last good checkpoint {} and every series "
                            "recorded up to it.\n",
-                           output.runFilePath(), kept);
+                           session->runFilePath(), kept);
             }
         } else if (kept.empty()) {
             fmt::print(stderr,
                        "grainlab run: error: {}\nThe run file {} holds no checkpoint to continue "
                        "from. Once the cause is removed (e.g. space freed), run the experiment "
                        "again with --force\n",
-                       e.what(), output.runFilePath());
+                       e.what(), session->runFilePath());
         } else {
             fmt::print(stderr,
                        "grainlab run: error: {}\nThe run file {} keeps its last good checkpoint "
                        "{} and every series recorded up to it. Once the cause is removed (e.g. "
                        "space freed), continue with: grainlab run --resume {}\n",
-                       e.what(), output.runFilePath(), kept, folder);
+                       e.what(), session->runFilePath(), kept, folder);
         }
         return 1;
     }
