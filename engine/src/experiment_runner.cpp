@@ -181,6 +181,11 @@ const Simulation& ExperimentRunner::simulation() const {
 const std::vector<SeriesTable>& ExperimentRunner::series() const {
     return impl_->ctx.series;
 }
+std::vector<double> ExperimentRunner::measuresNow() const {
+    const RunContext& ctx = impl_->ctx;
+    const MeasureSet measures = computeMeasures(ctx.sim->contactNetwork());
+    return seriesRow(measures, ctx.recordInputs(measures, true));
+}
 const std::vector<RunWarning>& ExperimentRunner::warnings() const {
     return impl_->ctx.warnings;
 }

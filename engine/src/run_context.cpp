@@ -63,23 +63,25 @@ void RunContext::setStrainReference() {
     length2At0 = sim->cell()[3];
     areaAt0 = sim->cellArea();
     haveLast = false;
+    lastRecordStep = -1;
 }
 
 std::int64_t strideOf(const ExperimentConfig& config, double strain) {
     return std::max<std::int64_t>(1, std::llround(strain / config.shear.axialStrainPerStep));
 }
 
-void RunContext::recordNow() {
-    const ContactNetwork network = sim->contactNetwork();
-    const MeasureSet measures = computeMeasures(network);
+RecordInputs RunContext::recordInputs(const MeasureSet& measures, bool asLastRecord) const {
     RecordInputs in;
     in.step = sim->stepCount();
     in.time = sim->time();
     in.eps1 = eps1();
     in.eps2 = eps2();
     in.epsv = epsv();
-    in.dilatancyIndex =
-        haveLast && in.eps1 != lastEps1 ? -(in.epsv - lastEpsv) / (in.eps1 - lastEps1) : 0.0;
+    const bool before = asLastRecord && lastRecordStep == in.step;
+    const bool have = before ? haveBeforeLast : haveLast;
+    const double e1 = before ? beforeLastEps1 : lastEps1;
+    const double ev = before ? beforeLastEpsv : lastEpsv;
+    in.dilatancyIndex = have && in.eps1 != e1 ? -(in.epsv - ev) / (in.eps1 - e1) : 0.0;
     in.stress = sim->stress();
     in.initialVoidCount = stage->initialVoidCount(measures);
     const auto& L = sim->stateRef().velocityGradient;
@@ -87,11 +89,23 @@ void RunContext::recordNow() {
     in.strainRate2 = -L[3];
     in.density = config.parameters.density;
     in.energies = sim->energies();
+    return in;
+}
+
+void RunContext::recordNow() {
+    const ContactNetwork network = sim->contactNetwork();
+    const MeasureSet measures = computeMeasures(network);
+    stage->noteRecord(measures);
+    const RecordInputs in = recordInputs(measures);
     SeriesTable& t = series[currentSeries];
     t.rows.push_back(seriesRow(measures, in));
     t.stages.push_back(stageName());
     t.stageKinds.push_back(stageKindName(stage->kind()));
     t.stagePressures.push_back(stage->pressure());
+    haveBeforeLast = haveLast;
+    beforeLastEps1 = lastEps1;
+    beforeLastEpsv = lastEpsv;
+    lastRecordStep = in.step;
     lastEps1 = in.eps1;
     lastEpsv = in.epsv;
     haveLast = true;

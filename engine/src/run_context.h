@@ -45,6 +45,11 @@ struct RunContext {
     double length1At0 = 0, length2At0 = 0, areaAt0 = 0; ///< strain references [m], [m^2]
     bool haveLast = false;
     double lastEps1 = 0, lastEpsv = 0;
+    /// The step of the last record, and the DI reference it was made with (not saved in the
+    /// runner state: measures of the step just recorded, ExperimentRunner::measuresNow()).
+    std::int64_t lastRecordStep = -1;
+    bool haveBeforeLast = false;
+    double beforeLastEps1 = 0, beforeLastEpsv = 0;
     std::int64_t nextRecordStep = 0, nextSnapshotStep = 0;
     std::int64_t checkpointCounter = 0;
     /// Grain orientations at the start of the current test [rad]: shared (never modified in
@@ -73,6 +78,10 @@ struct RunContext {
 
     /// Appends a row of measures now to the current series.
     void recordNow();
+    /// What a record made now with these measures would hold beyond them (the strains from the
+    /// test's start, the dilatancy index since the last record, N_vi, rates, energies).
+    /// With `asLastRecord` at the step of the last record: the inputs that record was made with.
+    RecordInputs recordInputs(const MeasureSet& measures, bool asLastRecord = false) const;
     /// "shear 100 kPa"; "done" once the run is.
     std::string stageName() const;
     StageIdentity identity() const;

@@ -96,11 +96,13 @@ public:
     /// test's end); false when the next stage follows at once (re-equilibration).
     virtual bool checkpointAtEnd() const = 0;
 
-    /// N_vi of the test for the record being made (measures of that record); 0 outside tests.
-    virtual double initialVoidCount(const MeasureSet& measures) {
+    /// N_vi of the test for a record made now (measures of that record); 0 outside tests.
+    virtual double initialVoidCount(const MeasureSet& measures) const {
         (void)measures;
         return 0;
     }
+    /// A record is made with these measures: a test keeps its first record's void count as N_vi.
+    virtual void noteRecord(const MeasureSet& measures) { (void)measures; }
     /// Adds what the stage keeps beside a checkpoint (called before the runner state is made).
     virtual void addToCheckpoint(CheckpointData& data) { (void)data; }
     /// Writes the stage's own fields of the runner state.
@@ -125,11 +127,11 @@ public:
     using Stage::Stage;
     bool isTest() const override { return true; }
     bool checkpointAtEnd() const override { return true; }
-    double initialVoidCount(const MeasureSet& measures) override {
-        if (voidsAtStart_ < 0) {
-            voidsAtStart_ = measures.voidCells.voidCount;
-        }
-        return voidsAtStart_;
+    double initialVoidCount(const MeasureSet& measures) const override {
+        return voidsAtStart_ < 0 ? measures.voidCells.voidCount : voidsAtStart_;
+    }
+    void noteRecord(const MeasureSet& measures) override {
+        voidsAtStart_ = initialVoidCount(measures);
     }
 
 protected:

@@ -77,6 +77,10 @@ public:
     const Simulation& simulation() const;
     /// Every test's series so far.
     const std::vector<SeriesTable>& series() const;
+    /// The numeric values a record made now would hold (the columns of seriesColumns() without
+    /// `stage`), computed as a record computes them; nothing is recorded. At the step of the
+    /// last record: the values that record holds (its DI counts from the record before it).
+    std::vector<double> measuresNow() const;
     /// Every warning given so far (run_warning.h), in order; a resumed run's include those of
     /// its checkpoint.
     const std::vector<RunWarning>& warnings() const;
