@@ -31,6 +31,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri
   python3-h5py python3-matplotlib python3-numpy python3-pandas
+  python3-dev pybind11-dev python3-pytest jupyter-nbconvert python3-ipykernel python3-vtk9
 )
 
 if ! command -v dpkg-query > /dev/null 2>&1; then

@@ -85,6 +85,9 @@ grep -q "^sudo" "$FAKE_LOG" && fail "root: sudo was used"
 # the snippets of docs/formats.md import (tests/scripts/doc_snippets_test.sh runs them).
 grep -q "^apt-get install -y .*python3-h5py python3-matplotlib python3-numpy python3-pandas" \
   "$FAKE_LOG" || fail "root: the Python packages are not installed: $(cat "$FAKE_LOG")"
+# The Python module's build and tests (pybind11, pytest, the notebook's nbconvert).
+grep -q "^apt-get install -y .*python3-dev pybind11-dev python3-pytest jupyter-nbconvert" \
+  "$FAKE_LOG" || fail "root: the Python module's packages are not installed: $(cat "$FAKE_LOG")"
 rm -rf "$work/user/grainlab-quick"
 
 # Another user with sudo: through sudo.
