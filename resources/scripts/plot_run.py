@@ -11,7 +11,7 @@ Writes two PNG files into the output folder:
 
 The checkpoint is the peak of q/p of the first shear test unless --checkpoint names another
 (a checkpoint name, or "last"). Every periodic object is drawn with its images and clipped to
-the periodic cell. docs/python.md walks through this script; docs/formats.md lists every dataset.
+the periodic cell. docs/h5py.md walks through this script; docs/formats.md lists every dataset.
 
 Usage: plot_run.py RUN_H5 [--out DIR] [--checkpoint NAME|last] [--dpi N]
 Needs python3, h5py, numpy and matplotlib (Debian: python3-h5py python3-numpy
