@@ -54,6 +54,8 @@ void bindErrors(py::module_& m) {
             if (p) {
                 std::rethrow_exception(p);
             }
+        } catch (const py::builtin_exception& e) {
+            e.set_error(); // TypeError, ValueError, ... raised by the bindings themselves
         } catch (const JsonFileError& e) {
             PyErr_SetString(experimentError, e.what());
         } catch (const SimulationError& e) {

@@ -63,6 +63,35 @@ Array cellMatrix(const std::array<double, 4>& h) {
     return out;
 }
 
+/// `value` as a NumPy array of real numbers (ints and floats; refuses strings, objects, bools
+/// and complex numbers with TypeError).
+py::array numericArray(const py::object& value, const char* name) {
+    const py::array a = py::array::ensure(value);
+    if (!a) {
+        throw py::type_error(fmt::format("{}: not convertible to an array", name));
+    }
+    const char kind = a.dtype().kind();
+    if (kind != 'f' && kind != 'i' && kind != 'u') {
+        throw py::type_error(fmt::format(
+            "{}: dtype {} is not a real number type (float or int)", name,
+            py::str(a.dtype()).cast<std::string>()));
+    }
+    return a;
+}
+
+/// A copy (or the array itself) as C-ordered doubles.
+py::array_t<double, py::array::c_style> asDoubles(const py::array& a) {
+    return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+}
+
+std::string shapeText(const py::array& a) {
+    std::string out = "(";
+    for (py::ssize_t k = 0; k < a.ndim(); ++k) {
+        out += fmt::format("{}{}", k ? ", " : "", a.shape(k));
+    }
+    return out + (a.ndim() == 1 ? ",)" : ")");
+}
+
 PySimulation& usable(PySimulation& s) {
     if (!s.failure.empty()) {
         throw std::runtime_error("this simulation failed (" + s.failure +
@@ -402,6 +431,46 @@ of that reference length); 'stress': sigma_ii held at `stress` [Pa] by the servo
         .def(
             "clear_velocities", [](PySimulation& s) { usable(s).sim->clearVelocities(); },
             "Zeroes every fluctuating velocity and spin.")
+        .def(
+            "set_velocities",
+            [](PySimulation& s, const py::object& velocities, const py::object& omega) {
+                usable(s);
+                const SimulationState& st = s.sim->stateRef();
+                const std::size_t n = st.grains.size();
+                std::vector<double> v1 = st.grains.v1, v2 = st.grains.v2, w = st.grains.omega;
+                if (!velocities.is_none()) {
+                    const py::array a = numericArray(velocities, "velocities");
+                    if (a.ndim() != 2 || a.shape(0) != py::ssize_t(n) || a.shape(1) != 2) {
+                        throw std::invalid_argument(fmt::format(
+                            "velocities: shape {}; must be ({}, 2), one row per grain",
+                            shapeText(a), n));
+                    }
+                    const auto converted = asDoubles(a);
+                    const auto v = converted.unchecked<2>();
+                    for (std::size_t i = 0; i < n; ++i) {
+                        v1[i] = v(i, 0);
+                        v2[i] = v(i, 1);
+                    }
+                }
+                if (!omega.is_none()) {
+                    const py::array a = numericArray(omega, "omega");
+                    if (a.ndim() != 1 || a.shape(0) != py::ssize_t(n)) {
+                        throw std::invalid_argument(fmt::format(
+                            "omega: shape {}; must be ({},), one value per grain", shapeText(a),
+                            n));
+                    }
+                    const auto converted = asDoubles(a);
+                    const auto o = converted.unchecked<1>();
+                    for (std::size_t i = 0; i < n; ++i) {
+                        w[i] = o(i);
+                    }
+                }
+                s.sim->setVelocities(v1, v2, w);
+            },
+            py::arg("velocities") = py::none(), py::arg("omega") = py::none(),
+            "Replaces the fluctuating velocities ((N, 2) [m/s]) and/or the spins ((N,) "
+            "[rad/s]) between steps. Refuses another shape, a non-numeric dtype and non-finite "
+            "values; the views keep showing the engine's arrays.")
         .def(
             "reset_strain_reference", [](PySimulation& s) { s.referenceCell = s.sim->cell(); },
             "Counts the strains of measures() from the cell as it is now.")

@@ -594,6 +594,29 @@ void Simulation::clearVelocities() {
     std::fill(g.omega.begin(), g.omega.end(), 0.0);
 }
 
+void Simulation::setVelocities(const std::vector<double>& v1, const std::vector<double>& v2,
+                               const std::vector<double>& omega) {
+    const std::size_t n = s_.grains.size();
+    const auto check = [n](const std::vector<double>& v, const char* name) {
+        if (v.size() != n) {
+            throw std::invalid_argument(
+                fmt::format("{}: {} values for {} grains", name, v.size(), n));
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!std::isfinite(v[i])) {
+                throw std::invalid_argument(
+                    fmt::format("{}: grain {} has {}, not a finite number", name, i, v[i]));
+            }
+        }
+    };
+    check(v1, "v1");
+    check(v2, "v2");
+    check(omega, "omega");
+    std::copy(v1.begin(), v1.end(), s_.grains.v1.begin());
+    std::copy(v2.begin(), v2.end(), s_.grains.v2.begin());
+    std::copy(omega.begin(), omega.end(), s_.grains.omega.begin());
+}
+
 SimulationState Simulation::state() const {
     return s_;
 }

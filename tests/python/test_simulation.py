@@ -138,3 +138,35 @@ def test_garbage_calls_do_not_crash_the_interpreter(small):
             raised += 1
     assert raised >= 30
     assert sim.grain_count == 150  # still usable
+
+
+def test_velocities_set_from_arrays(cli_run):
+    name = shear_checkpoint(cli_run)["name"]
+    sim, same = cli_run.simulation(checkpoint=name), cli_run.simulation(checkpoint=name)
+    n = sim.grain_count
+    v1 = sim.v1                                        # a view, which must follow the change
+    sim.set_velocities(sim.velocities, sim.omega.copy())  # the same values: the same bits
+    sim.step(300)
+    same.step(300)
+    assert sim.identical(same)
+    sim.set_velocities(np.zeros((n, 2)), np.zeros(n, dtype=np.int64))
+    same.clear_velocities()
+    assert sim.identical(same)
+    assert not v1.any()
+    bad = [
+        (np.zeros((n, 3)), None, ValueError, r"\(150, 2\)"),
+        (np.zeros((n - 1, 2)), None, ValueError, "one row per grain"),
+        (np.zeros(2 * n), None, ValueError, "must be"),
+        (np.full((n, 2), "x"), None, TypeError, "dtype"),
+        (np.zeros((n, 2), dtype=object), None, TypeError, "dtype"),
+        (np.zeros((n, 2), dtype=complex), None, TypeError, "dtype"),
+        (np.full((n, 2), np.nan), None, ValueError, "finite"),
+        (None, np.zeros(n + 1), ValueError, "one value per grain"),
+        (None, [[1.0]], ValueError, "must be"),
+        (None, "spin", TypeError, "dtype"),
+    ]
+    before = sim.velocities
+    for velocities, omega, error, message in bad:
+        with pytest.raises(error, match=message):
+            sim.set_velocities(velocities, omega)
+    assert np.array_equal(sim.velocities, before)      # a refusal changes nothing

@@ -48,6 +48,11 @@ public:
     void setFriction(double friction);
     /// Zeroes all fluctuating velocities and spins (e.g. between stages).
     void clearVelocities();
+    /// Replaces the fluctuating velocities [m/s] and spins [rad/s] of every grain, between
+    /// steps, in place (the arrays keep their storage). Refuses (std::invalid_argument) arrays
+    /// of another length than the grain count and non-finite values; nothing is changed then.
+    void setVelocities(const std::vector<double>& v1, const std::vector<double>& v2,
+                       const std::vector<double>& omega);
 
     /// A copy of the full state: a complete checkpoint.
     SimulationState state() const;
