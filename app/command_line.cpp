@@ -19,6 +19,7 @@
 #include "report/report_figures_writer.h"
 #include "stability/stability_figures_writer.h"
 #include "study/study_figures_writer.h"
+#include "common/resources.h"
 #endif
 
 namespace grainlab {
@@ -164,15 +165,14 @@ int runCommandLine(int argc, char** argv) {
     CLI::App* reportCommand = addReportCommand(app, report);
 
     ReproduceOptions reproduce;
-    reproduce.experiment =
-        std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/reference.json";
+    reproduce.experiment = resourcePath("experiments/reference.json");
     CLI::App* reproduceCommand = addReproduceCommand(app, reproduce);
 
     StabilityOptions stability;
     StabilityCommands stabilityCommands;
     addStabilityCommands(app, stability, stabilityCommands);
 
-    std::string experiment = std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json";
+    std::string experiment = resourcePath("experiments/quick.json");
     app.add_option("--experiment", experiment, "experiment to open in the window");
 
     try {

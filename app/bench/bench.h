@@ -11,6 +11,7 @@
 #include <string>
 
 #include "grainlab/simulation_state.h"
+#include "common/resources.h"
 
 namespace CLI {
 class App;
@@ -32,7 +33,7 @@ struct BenchOptions {
     /// Also run the minimal disk kernel (limit_kernel.h) beside the engine's disk rows, at each
     /// thread count, in every round.
     bool limit = false;
-    std::string lammpsDirectory = std::string(GRAINLAB_SOURCE_DIR) + "/resources/bench/lammps";
+    std::string lammpsDirectory = resourcePath("bench/lammps");
     std::string lammpsExecutable = "lmp";
     bool scaling = false; ///< cost per grain-step at 1k, 8k, 32k, 128k grains instead
     /// The live window instead (window_bench.h): engine speed headless and in the window for
@@ -43,7 +44,7 @@ struct BenchOptions {
     /// The window shows strong force chains and void cells by valence (not its default view)
     /// while the engine's slowdown is measured.
     bool guiOverlays = false;
-    std::string experiment = std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json";
+    std::string experiment = resourcePath("experiments/quick.json");
 };
 
 /// Declares the bench options on the `bench` subcommand.

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "gui/main_window.h"
+#include "common/resources.h"
 
 namespace grainlab {
 
@@ -29,7 +30,7 @@ int runGui(int argc, char** argv, const std::string& experimentPath) {
     ui::MainWindow window;
     const std::string path =
         experimentPath.empty()
-            ? std::string(GRAINLAB_SOURCE_DIR "/resources/experiments/quick.json")
+            ? resourcePath("experiments/quick.json")
             : experimentPath;
     QString error;
     if (!window.openExperiment(QString::fromStdString(path), &error)) {

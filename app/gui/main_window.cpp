@@ -36,6 +36,7 @@
 #include "gui/report_job.h"
 #include "gui/study_window.h"
 #include "gui/window_run_folder.h"
+#include "common/resources.h"
 
 namespace grainlab::ui {
 namespace {
@@ -697,7 +698,7 @@ void MainWindow::openRunFileDialog() {
 
 void MainWindow::openExperimentDialog() {
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open experiment"), QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/experiments"),
+        this, tr("Open experiment"), QString::fromStdString(resourcePath("experiments")),
         tr("Experiment files (*.json)"));
     if (path.isEmpty()) {
         return;

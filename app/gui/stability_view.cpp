@@ -24,6 +24,7 @@
 #include "gui/stability_map_text.h"
 #include "gui/ui_text.h"
 #include "gui/window_run_folder.h"
+#include "common/resources.h"
 
 namespace grainlab::ui {
 namespace {
@@ -33,7 +34,7 @@ const QString kPresetFileItem = QStringLiteral("\x01file"); ///< the box's "Pres
 const QPoint kNoSquare(-1, -1);
 
 QString presetsFolder() {
-    return QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/stability");
+    return QString::fromStdString(resourcePath("stability"));
 }
 
 QString axisText(StabilityAxis axis) {

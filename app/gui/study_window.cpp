@@ -26,6 +26,7 @@
 #include "gui/duration_text.h"
 #include "gui/stability_view.h"
 #include "gui/ui_text.h"
+#include "common/resources.h"
 
 namespace grainlab::ui {
 namespace {
@@ -580,7 +581,7 @@ QStringList StudyWindow::exportFigures(const QString& folder, QString* error) {
 
 void StudyWindow::openStudyDialog() {
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open study"), QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/studies"),
+        this, tr("Open study"), QString::fromStdString(resourcePath("studies")),
         tr("Study files (*.json)"));
     QString error;
     if (!path.isEmpty() && !openStudy(path, &error)) {

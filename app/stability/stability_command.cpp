@@ -14,6 +14,7 @@
 #include "common/progress_bar.h"
 #include "grainlab/strict_json.h"
 #include "stability/map_point_command.h"
+#include "common/resources.h"
 
 namespace grainlab {
 
@@ -211,7 +212,7 @@ int runGeometryMap(const StabilityOptions& options, const fs::path& dir, const s
 } // namespace
 
 std::string stabilityPresetPath(const std::string& name) {
-    return (fs::path(GRAINLAB_SOURCE_DIR) / "resources" / "stability" / (name + ".json")).string();
+    return resourcePath("stability/" + name + ".json");
 }
 
 int runStabilityCommand(const StabilityOptions& options) {

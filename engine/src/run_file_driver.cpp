@@ -27,6 +27,10 @@ struct DriverFile {
     std::vector<std::pair<haddr_t, std::vector<unsigned char>>> held;
 };
 
+/// The file named in HDF5's error stack: its name only (no path of the source tree is compiled
+/// into GrainLab).
+constexpr const char* kThisFile = "run_file_driver.cpp";
+
 DriverFile* of(H5FD_t* file) {
     return reinterpret_cast<DriverFile*>(file);
 }
@@ -37,14 +41,14 @@ const DriverFile* of(const H5FD_t* file) {
 /// Pushes an error in the POSIX driver's words ("<what>, errno = N, error message = '...'"), so
 /// that its cause reads the same in messages.
 herr_t failure(const char* function, hid_t minor, const char* what, int cause) {
-    H5Epush2(H5E_DEFAULT, __FILE__, function, __LINE__, H5E_ERR_CLS, H5E_VFL, minor,
+    H5Epush2(H5E_DEFAULT, kThisFile, function, __LINE__, H5E_ERR_CLS, H5E_VFL, minor,
              "%s, errno = %d, error message = '%s'", what, cause, std::strerror(cause));
     return -1;
 }
 
 H5FD_t* driverOpen(const char* name, unsigned flags, hid_t, haddr_t maxaddr) {
     if (name == nullptr || *name == '\0' || maxaddr == 0 || maxaddr == HADDR_UNDEF) {
-        H5Epush2(H5E_DEFAULT, __FILE__, "driverOpen", __LINE__, H5E_ERR_CLS, H5E_ARGS, H5E_BADVALUE,
+        H5Epush2(H5E_DEFAULT, kThisFile, "driverOpen", __LINE__, H5E_ERR_CLS, H5E_ARGS, H5E_BADVALUE,
                  "invalid file name or address space");
         return nullptr;
     }
@@ -125,7 +129,7 @@ bool outsideAllocation(const DriverFile* f, haddr_t address, size_t size, const 
     if (address != HADDR_UNDEF && address + size <= f->eoa) {
         return false;
     }
-    H5Epush2(H5E_DEFAULT, __FILE__, function, __LINE__, H5E_ERR_CLS, H5E_IO, H5E_OVERFLOW,
+    H5Epush2(H5E_DEFAULT, kThisFile, function, __LINE__, H5E_ERR_CLS, H5E_IO, H5E_OVERFLOW,
              "addr overflow, addr = %llu, size = %llu, eoa = %llu",
              static_cast<unsigned long long>(address), static_cast<unsigned long long>(size),
              static_cast<unsigned long long>(f->eoa));
