@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Installing and packaging GrainLab, as a user would:
+#   install_test.sh BUILD_DIR SOURCE_DIR
+# cmake --install into a prefix, which is then moved (an installed GrainLab finds its resources
+# from its own location, and no path of the source tree is compiled into it): the installed
+# grainlab runs the tiny experiment from an unrelated folder, looks for its presets inside the
+# prefix, and the installed Python module imports. Then cpack builds the Debian package: its
+# name, its declared dependencies, its files (executable, presets, docs, desktop entry, icon,
+# Python module), and the executable unpacked from it runs.
+set -euo pipefail
+build="$1" source_dir="$2"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAILED: $*" >&2; exit 1; }
+
+cmake --install "$build" --prefix "$work/prefix" > "$work/install.log" ||
+  { cat "$work/install.log" >&2; fail "cmake --install"; }
+mv "$work/prefix" "$work/moved"
+prefix="$work/moved"
+exe="$prefix/bin/grainlab"
+[[ -x "$exe" ]] || fail "no $exe"
+if grep -qF "$source_dir" "$exe"; then
+  fail "the installed executable holds the source tree's path $source_dir"
+fi
+for f in share/grainlab/experiments/quick.json share/grainlab/studies/tiny.json \
+         share/grainlab/stability/tiny.json share/doc/grainlab/python.md \
+         share/applications/grainlab.desktop share/icons/hicolor/scalable/apps/grainlab.svg; do
+  [[ -f "$prefix/$f" ]] || fail "not installed: $f"
+done
+mkdir "$work/elsewhere"
+cd "$work/elsewhere"
+env -u GRAINLAB_RESOURCES "$exe" run "$prefix/share/grainlab/experiments/tiny.json" --out run \
+  --quiet > run.log 2>&1 || { cat run.log >&2; fail "the installed grainlab did not run tiny.json"; }
+[[ -s run/p015kPa/series.csv ]] || fail "the installed grainlab wrote no series"
+# A preset is looked for in the prefix it runs from.
+if env -u GRAINLAB_RESOURCES "$exe" stability --preset no-such-preset --out map > preset.log 2>&1; then
+  fail "an unknown preset was accepted"
+fi
+grep -qF "$prefix/bin/../share/grainlab/stability/no-such-preset.json" preset.log ||
+  grep -qF "$prefix/share/grainlab/stability/no-such-preset.json" preset.log ||
+  { cat preset.log >&2; fail "the preset was not looked for inside the prefix"; }
+if [[ -d "$prefix/lib/python3/dist-packages/grainlab" ]]; then
+  PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c "
+import grainlab, sys
+assert grainlab.__file__.startswith('$prefix'), grainlab.__file__
+e = grainlab.Experiment.load('$prefix/share/grainlab/experiments/tiny.json')
+assert grainlab.RunFolder('run').finished
+" || fail "the installed Python module"
+fi
+
+# The Debian package.
+command -v cpack > /dev/null || fail "no cpack"
+cd "$build"
+cpack -G DEB -B "$work/package" > "$work/cpack.log" 2>&1 || { cat "$work/cpack.log" >&2; fail "cpack"; }
+version="$(sed -n 's/^project(GrainLab VERSION \([0-9.]*\).*/\1/p' "$source_dir/CMakeLists.txt")"
+deb="$work/package/grainlab_${version}_amd64.deb"
+[[ -f "$deb" ]] || { ls "$work/package" >&2; fail "no package $deb"; }
+depends="$(dpkg-deb -f "$deb" Depends)"
+for lib in libqt6widgets6 libhdf5 libgomp1 libfmt9; do
+  [[ "$depends" == *"$lib"* ]] || fail "Depends does not name $lib: $depends"
+done
+dpkg-deb -c "$deb" > "$work/contents"
+for f in ./usr/bin/grainlab ./usr/share/grainlab/experiments/quick.json \
+         ./usr/share/applications/grainlab.desktop \
+         ./usr/share/icons/hicolor/scalable/apps/grainlab.svg ./usr/share/doc/grainlab/README.md; do
+  grep -qF " $f" "$work/contents" || fail "the package lacks $f"
+done
+if [[ -d "$prefix/lib/python3/dist-packages/grainlab" ]]; then
+  grep -qF " ./usr/lib/python3/dist-packages/grainlab/__init__.py" "$work/contents" ||
+    fail "the package lacks the Python module"
+fi
+dpkg-deb -x "$deb" "$work/unpacked"
+cd "$work/elsewhere"
+"$work/unpacked/usr/bin/grainlab" run --resume run > resume.log 2>&1 ||
+  { cat resume.log >&2; fail "the packaged grainlab does not run"; }
+grep -q "finished" resume.log || fail "the packaged grainlab: $(cat resume.log)"
+echo "ok: installed, moved, run; package $(basename "$deb") ($(du -h "$deb" | cut -f1)): $depends"
