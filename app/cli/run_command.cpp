@@ -23,6 +23,30 @@ extern "C" void onInterrupt(int) {
     interrupted.store(true);
 }
 
+/// SIGINT and SIGTERM noted, not fatal, while the command runs; the previous handlers back when
+/// it returns. Installed before the run folder is touched: a stop that comes while a new run
+/// makes its files (a study stopped just as its pool starts a run) ends the run at its first
+/// checkpoint, instead of killing it between its run file and that checkpoint, where a resume
+/// would find nothing to continue from.
+class InterruptHandlers {
+public:
+    InterruptHandlers() {
+        interrupted.store(false);
+        previousInt_ = std::signal(SIGINT, onInterrupt);
+        previousTerm_ = std::signal(SIGTERM, onInterrupt);
+    }
+    ~InterruptHandlers() {
+        std::signal(SIGINT, previousInt_);
+        std::signal(SIGTERM, previousTerm_);
+    }
+    InterruptHandlers(const InterruptHandlers&) = delete;
+    InterruptHandlers& operator=(const InterruptHandlers&) = delete;
+
+private:
+    void (*previousInt_)(int) = nullptr;
+    void (*previousTerm_)(int) = nullptr;
+};
+
 /// The test hook (see run_command.h): after this many steps of this process, raise the signal.
 struct TestStop {
     std::int64_t afterSteps = -1; ///< -1: no test stop
@@ -86,6 +110,7 @@ std::string experimentRemedy(const std::exception& e) {
 int runExperimentCommand(const RunOptions& options) {
     const bool resume = !options.resume.empty();
     const std::string folder = resume ? options.resume : options.out;
+    const InterruptHandlers handlers;
     std::unique_ptr<RunSession> session;
     try {
         // A new run's experiment is read and checked before its folder is created or locked: a
@@ -110,9 +135,6 @@ int runExperimentCommand(const RunOptions& options) {
     // reports and survives like a full disk, instead of SIGXFSZ killing the process.
     std::signal(SIGXFSZ, SIG_IGN);
 
-    interrupted.store(false);
-    auto previous = std::signal(SIGINT, onInterrupt);
-    auto previousTerm = std::signal(SIGTERM, onInterrupt);
     ProgressBar bar(fmt::format("{} ({} grains)", config.name, config.assembly.grainCount));
     auto last = std::chrono::steady_clock::now();
     std::int64_t lastStep = 0;
@@ -190,8 +212,6 @@ int runExperimentCommand(const RunOptions& options) {
     } catch (const std::exception& e) {
         bar.finish();
         session->saveCostAfterFailure();
-        std::signal(SIGINT, previous);
-        std::signal(SIGTERM, previousTerm);
         const std::string kept = session->lastCheckpoint();
         const std::string remedy = experimentRemedy(e);
         if (!remedy.empty()) {
@@ -225,8 +245,6 @@ int runExperimentCommand(const RunOptions& options) {
         }
         return 1;
     }
-    std::signal(SIGINT, previous);
-    std::signal(SIGTERM, previousTerm);
     return status;
 }
 

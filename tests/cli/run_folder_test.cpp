@@ -181,6 +181,42 @@ TEST(RunFolder, ASecondRunIntoALiveFolderIsRefusedAndTouchesNothing) {
     fs::remove_all(base);
 }
 
+// A stop that comes while a new run makes its files (a study stopped just as its pool starts a
+// run): at every moment the run is either killed before it made any file, or it ends as an
+// interrupted run (130) whose folder resumes to the end; never a run file without a checkpoint.
+TEST(RunFolder, AStopAsANewRunStartsLeavesNoFolderOrOneThatResumes) {
+    const fs::path base = freshFolder("early-stop");
+    const fs::path experiment = writeTinyExperiment(base);
+    for (const int delayMs : {0, 2, 5, 10, 20, 40, 80, 160}) {
+        SCOPED_TRACE(fmt::format("SIGINT {} ms after the start", delayMs));
+        const fs::path out = base / fmt::format("out{}", delayMs);
+        const pid_t child = fork();
+        ASSERT_GE(child, 0);
+        if (child == 0) {
+            std::freopen("/dev/null", "w", stderr);
+            std::freopen("/dev/null", "w", stdout);
+            execl(GRAINLAB_EXE, GRAINLAB_EXE, "run", experiment.c_str(), "--out", out.c_str(),
+                  "--quiet", static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));
+        kill(child, SIGINT);
+        int status = 0;
+        waitpid(child, &status, 0);
+        if (WIFSIGNALED(status)) {
+            EXPECT_EQ(WTERMSIG(status), SIGINT);
+            EXPECT_FALSE(fs::exists(out / "run.h5")) << "killed after it made its run file";
+            continue;
+        }
+        ASSERT_TRUE(WIFEXITED(status));
+        EXPECT_TRUE(WEXITSTATUS(status) == 130 || WEXITSTATUS(status) == 0)
+            << "exit " << WEXITSTATUS(status);
+        const Result again = runGrainlab(fmt::format("run --resume {} --quiet", out.string()));
+        EXPECT_EQ(again.status, 0) << again.output;
+    }
+    fs::remove_all(base);
+}
+
 TEST(RunFolder, OutOfAnExistingRunIsRefusedWithoutForce) {
     const fs::path base = freshFolder("exists");
     const fs::path experiment = writeTinyExperiment(base);

@@ -10,6 +10,8 @@
 
 #include <QComboBox>
 #include <QDir>
+#include <QDirIterator>
+#include <QFile>
 #include <QFileInfo>
 #include <QLabel>
 #include <QProgressBar>
@@ -37,6 +39,20 @@ bool near(QColor a, QColor b, int tolerance = 10) {
     return std::abs(a.red() - b.red()) <= tolerance &&
            std::abs(a.green() - b.green()) <= tolerance &&
            std::abs(a.blue() - b.blue()) <= tolerance;
+}
+
+/// Every run log of a study folder (runs/*/run.log and the like), for a failure's message.
+std::string runLogs(const QString& folder) {
+    std::string text;
+    QDirIterator it(folder, {QStringLiteral("*.log")}, QDir::Files, QDirIterator::Subdirectories);
+    while (it.hasNext()) {
+        QFile file(it.next());
+        if (file.open(QIODevice::ReadOnly)) {
+            text += "\n--- " + file.fileName().toStdString() + "\n" +
+                    file.readAll().right(2000).toStdString();
+        }
+    }
+    return text;
 }
 
 int finished(const StudyWindow& s) {
@@ -121,7 +137,8 @@ TEST(StudyWindow, RunsTheTinyStudyAndChartsOnePointPerSetting) {
     // Start again: the study continues to its end.
     ASSERT_TRUE(s->start(&error)) << error.toStdString();
     ASSERT_TRUE(waitFor([&] { return !s->running(); }, 600000));
-    ASSERT_EQ(s->lastExitStatus().value_or(-99), 0);
+    ASSERT_EQ(s->lastExitStatus().value_or(-99), 0) << s->statusLabel()->text().toStdString()
+                                                    << runLogs(folder);
     ASSERT_TRUE(waitFor([&] { return finished(*s) == total; }, 20000));
     EXPECT_EQ(s->progressBar()->value(), total);
     EXPECT_GE(counts.size(), 3u) << "the runs' results came in all at once";
