@@ -9,6 +9,8 @@
 
 #include "bench/bench.h"
 #include "cli/run_command.h"
+#include "common/resources.h"
+#include "common/version.h"
 #include "report/report_command.h"
 #include "stability/stability_command.h"
 #include "study/study_command.h"
@@ -19,7 +21,6 @@
 #include "report/report_figures_writer.h"
 #include "stability/stability_figures_writer.h"
 #include "study/study_figures_writer.h"
-#include "common/resources.h"
 #endif
 
 namespace grainlab {
@@ -147,7 +148,7 @@ void addStabilityCommands(CLI::App& app, StabilityOptions& stability, StabilityC
 
 int runCommandLine(int argc, char** argv) {
     CLI::App app{"GrainLab: 2D discrete element simulations of oval grains"};
-    app.set_version_flag("--version", std::string(GRAINLAB_VERSION));
+    app.set_version_flag("--version", versionText());
 
     BenchOptions bench;
     auto* benchCommand = app.add_subcommand(

@@ -11,6 +11,7 @@
 
 #include "cli/run_session.h"
 #include "common/atomic_file.h"
+#include "common/version.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/measures.h"
 
@@ -171,6 +172,7 @@ does not change: with_changes() (added in Python) gives a new, validated one.)do
 PYBIND11_MODULE(_grainlab, m) {
     m.doc() = "GrainLab's engine, runner and run files (the compiled part of `grainlab`).";
     m.attr("__version__") = GRAINLAB_VERSION;
+    m.attr("__commit__") = grainlab::buildCommit(); // as `grainlab --version` names it
     grainlab::python::bindErrors(m);
     grainlab::python::bindExperiment(m);
     grainlab::python::bindSimulation(m);

@@ -1,10 +1,12 @@
 """Experiments from files and dicts: the same validation as the command line."""
 
 import json
+import subprocess
 
 import pytest
 
 import grainlab
+from conftest import EXE
 
 
 def test_load_reads_the_file(tiny, tiny_path):
@@ -74,3 +76,12 @@ def test_bad_files_and_types(tmp_path):
         grainlab.Experiment.from_dict({"time_step": float("nan")})
     with pytest.raises(TypeError):
         grainlab.Experiment.load(42)
+
+
+def test_version_and_commit_are_the_executables():
+    assert grainlab.__version__ and grainlab.__commit__
+    if not EXE:
+        pytest.skip("GRAINLAB_EXE is not set (ctest sets it)")
+    printed = subprocess.run([EXE, "--version"], check=True, capture_output=True,
+                             text=True).stdout.strip()
+    assert printed == f"GrainLab {grainlab.__version__} (commit {grainlab.__commit__})"

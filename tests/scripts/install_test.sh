@@ -22,13 +22,30 @@ exe="$prefix/bin/grainlab"
 if grep -qF "$source_dir" "$exe"; then
   fail "the installed executable holds the source tree's path $source_dir"
 fi
-for f in share/grainlab/experiments/quick.json share/grainlab/studies/tiny.json \
+for f in share/man/man1/grainlab.1.gz share/doc/grainlab/copyright share/doc/grainlab/changelog.gz \
+         share/grainlab/experiments/quick.json share/grainlab/studies/tiny.json \
          share/grainlab/stability/tiny.json share/doc/grainlab/python.md \
          share/applications/grainlab.desktop share/icons/hicolor/scalable/apps/grainlab.svg; do
   [[ -f "$prefix/$f" ]] || fail "not installed: $f"
 done
 mkdir "$work/elsewhere"
 cd "$work/elsewhere"
+# The version names the project's version and the commit built.
+version="$(sed -n 's/^project(GrainLab VERSION \([0-9.]*\).*/\1/p' "$source_dir/CMakeLists.txt")"
+"$exe" --version > version.txt || fail "grainlab --version"
+grep -qE "^GrainLab $version \(commit ([0-9a-f]{12}(-modified)?|unknown)\)$" version.txt ||
+  fail "grainlab --version printed: $(cat version.txt)"
+"$exe" run --help > run-help.txt || fail "grainlab run --help"
+grep -qF -- "--resume" run-help.txt || fail "grainlab run --help lacks --resume"
+# The manual page is the --help texts: every subcommand, its options, no path of the build.
+LC_ALL=C MANWIDTH=200 man -l "$prefix/share/man/man1/grainlab.1.gz" 2> man.err > man.txt || fail "man: $(cat man.err)"
+for text in "grainlab run" "grainlab study collect" "grainlab stability cell" "--resume" \
+            "--emit" "$(head -n 1 version.txt)"; do
+  grep -qF -- "$text" man.txt || fail "the manual page lacks '$text'"
+done
+if grep -qF "$build" man.txt; then
+  fail "the manual page names the build folder $build"
+fi
 env -u GRAINLAB_RESOURCES "$exe" run "$prefix/share/grainlab/experiments/tiny.json" --out run \
   --quiet > run.log 2>&1 || { cat run.log >&2; fail "the installed grainlab did not run tiny.json"; }
 [[ -s run/p015kPa/series.csv ]] || fail "the installed grainlab wrote no series"
@@ -52,7 +69,6 @@ fi
 command -v cpack > /dev/null || fail "no cpack"
 cd "$build"
 cpack -G DEB -B "$work/package" > "$work/cpack.log" 2>&1 || { cat "$work/cpack.log" >&2; fail "cpack"; }
-version="$(sed -n 's/^project(GrainLab VERSION \([0-9.]*\).*/\1/p' "$source_dir/CMakeLists.txt")"
 deb="$work/package/grainlab_${version}_amd64.deb"
 [[ -f "$deb" ]] || { ls "$work/package" >&2; fail "no package $deb"; }
 depends="$(dpkg-deb -f "$deb" Depends)"
@@ -61,6 +77,7 @@ for lib in libqt6widgets6 libhdf5 libgomp1 libfmt9; do
 done
 dpkg-deb -c "$deb" > "$work/contents"
 for f in ./usr/bin/grainlab ./usr/share/grainlab/experiments/quick.json \
+         ./usr/share/man/man1/grainlab.1.gz ./usr/share/doc/grainlab/copyright \
          ./usr/share/applications/grainlab.desktop \
          ./usr/share/icons/hicolor/scalable/apps/grainlab.svg ./usr/share/doc/grainlab/README.md; do
   grep -qF " $f" "$work/contents" || fail "the package lacks $f"
@@ -68,6 +85,14 @@ done
 if [[ -d "$prefix/lib/python3/dist-packages/grainlab" ]]; then
   grep -qF " ./usr/lib/python3/dist-packages/grainlab/__init__.py" "$work/contents" ||
     fail "the package lacks the Python module"
+fi
+# Debian's own check of the package: no errors (warnings are printed).
+if command -v lintian > /dev/null; then
+  lintian --allow-root "$deb" > "$work/lintian.txt" 2>&1 || true
+  cat "$work/lintian.txt"
+  if grep -q "^E: " "$work/lintian.txt"; then
+    fail "lintian reports errors"
+  fi
 fi
 dpkg-deb -x "$deb" "$work/unpacked"
 cd "$work/elsewhere"

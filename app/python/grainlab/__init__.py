@@ -26,6 +26,7 @@ from ._grainlab import (  # noqa: F401  (re-exported)
     Runner,
     Simulation,
     SimulationError,
+    __commit__,
     __version__,
     series_columns,
 )
@@ -33,6 +34,7 @@ from ._grainlab import (  # noqa: F401  (re-exported)
 __all__ = [
     "Experiment", "Runner", "RunFolder", "Simulation", "run", "resume", "series_columns",
     "GrainLabError", "ExperimentError", "SimulationError", "RunFolderError", "__version__",
+    "__commit__",
 ]
 
 
