@@ -238,12 +238,33 @@ inline std::string objectName(const H5::IdComponent& object) {
     return n > 0 ? std::string(name) : std::string("?");
 }
 
-/// Checksummed, chunked layout of a one-dimensional dataset of `n` values.
+/// Datasets of at least this many values are compressed (the checkpoints' grains, contacts and
+/// void cells); smaller ones, and the series, whose last chunk is rewritten at every record,
+/// are not.
+constexpr hsize_t kCompressFrom = 512;
+
+/// zlib's level: 1 is within a few per cent of the best size on a checkpoint's doubles, and
+/// several times faster than the default 6 (docs/formats.md).
+constexpr unsigned kDeflateLevel = 1;
+
+/// The filters of a dataset's chunks, in the order they are applied on writing: for a large
+/// dataset the shuffle (each value's bytes regrouped by significance, so that zlib finds the
+/// exponents' repetition) and deflate (zlib, HDF5's own filters: h5py and h5dump read them);
+/// then Fletcher32, on the stored bytes, so that damage is found before anything is inflated.
+inline void addChunkFilters(H5::DSetCreatPropList& p, hsize_t values) {
+    if (values >= kCompressFrom) {
+        p.setShuffle();
+        p.setDeflate(kDeflateLevel);
+    }
+    p.setFletcher32();
+}
+
+/// Checksummed, chunked layout of a one-dimensional dataset of `n` values, compressed when large.
 inline H5::DSetCreatPropList checksummedLayout(hsize_t n) {
     H5::DSetCreatPropList p;
     const hsize_t chunk = std::clamp<hsize_t>(n, 1, 65536);
     p.setChunk(1, &chunk);
-    p.setFletcher32();
+    addChunkFilters(p, n);
     return p;
 }
 
@@ -597,7 +618,7 @@ void writeMatrix(H5::Group& group, const std::string& name, const std::vector<T>
     const hsize_t chunk[2] = {std::max<hsize_t>(1, rows), std::max<hsize_t>(1, columns)};
     H5::DSetCreatPropList layout;
     layout.setChunk(2, chunk);
-    layout.setFletcher32();
+    addChunkFilters(layout, hsize_t(rows) * columns);
     H5::DataSet ds = group.createDataSet(name, H5Types<T>::file(), H5::DataSpace(2, dims), layout,
                                          writeThrough());
     if (!values.empty()) {

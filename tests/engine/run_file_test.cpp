@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <H5Cpp.h>
 #include <gtest/gtest.h>
 
 #include "grainlab/assembly.h"
@@ -160,6 +161,39 @@ TEST(RunFile, StateRoundTripIsBitExact) {
     }
     expectSameState(state, readState(path, checkpointGroup("after squeeze")));
     EXPECT_EQ(readRunnerState(path, checkpointGroup("after squeeze")), "runner: stage 2");
+}
+
+// A checkpoint's large datasets are compressed with HDF5's own filters (shuffle, deflate), with
+// Fletcher32 after them on the stored bytes; small ones carry Fletcher32 alone; either reads back
+// to the bit.
+TEST(RunFile, LargeDatasetsAreCompressedAndReadBackBitExact) {
+    ScratchDir dir;
+    const Simulation sim = test::squeezedAssembly(600, 5, 300);
+    const SimulationState state = sim.state();
+    const std::string path = dir.file("run.h5");
+    {
+        RunFile file(path, "{}");
+        file.checkpoint("large", state, "");
+    }
+    expectSameState(state, readState(path, checkpointGroup("large")));
+    const auto filters = [&](const std::string& dataset) {
+        H5::H5File file(path, H5F_ACC_RDONLY);
+        const H5::DSetCreatPropList p =
+            file.openDataSet(checkpointGroup("large") + "/" + dataset).getCreatePlist();
+        std::vector<H5Z_filter_t> ids;
+        for (int k = 0; k < p.getNfilters(); ++k) {
+            unsigned flags = 0, config = 0;
+            std::size_t count = 8;
+            unsigned values[8] = {};
+            char name[64] = {};
+            ids.push_back(p.getFilter(k, flags, count, values, sizeof name, name, config));
+        }
+        return ids;
+    };
+    EXPECT_EQ(filters("grains/omega"),
+              (std::vector<H5Z_filter_t>{H5Z_FILTER_SHUFFLE, H5Z_FILTER_DEFLATE,
+                                         H5Z_FILTER_FLETCHER32}));
+    EXPECT_EQ(filters("cell"), std::vector<H5Z_filter_t>{H5Z_FILTER_FLETCHER32});
 }
 
 TEST(RunFile, RestartFromCheckpointContinuesBitForBit) {
