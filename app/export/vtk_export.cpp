@@ -352,8 +352,8 @@ VtkExportSummary exportVtk(const VtkExportOptions& options,
     if (!finished && !options.unfinished) {
         throw VtkExportRefused(fmt::format(
             "{}: the run has not finished (its last checkpoint is {}); finish it with `grainlab "
-            "run --resume`, or export the checkpoints it has with --unfinished",
-            path, last));
+            "run --resume {}`, or export the checkpoints it has with --unfinished",
+            path, last, fs::absolute(path).parent_path().string()));
     }
     const std::vector<VtkTestFrames> tests = chooseFrames(infos, options.every, options.strains);
 
