@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -11,18 +12,28 @@
 namespace grainlab {
 
 int runExportVtkCommand(const VtkExportOptions& options, bool quiet) {
-    try {
-        VtkExportSummary summary;
-        if (quiet) {
-            summary = exportVtk(options);
+    std::optional<ProgressBar> bar;
+    if (!quiet) {
+        bar.emplace("export vtk");
+    }
+    // An error goes on a line of its own, not after the bar drawn in place.
+    const auto error = [&](const std::string& line) {
+        if (bar) {
+            bar->note(line);
         } else {
-            ProgressBar bar("export vtk");
-            summary = exportVtk(options, [&](double fraction, const std::string& status) {
-                bar.update(fraction, status);
-            });
-            bar.finish();
+            fmt::print(stderr, "{}\n", line);
         }
-        if (!quiet) {
+    };
+    try {
+        std::function<void(double, const std::string&)> progress;
+        if (bar) {
+            progress = [&](double fraction, const std::string& status) {
+                bar->update(fraction, status);
+            };
+        }
+        const VtkExportSummary summary = exportVtk(options, progress);
+        if (bar) {
+            bar->finish();
             fmt::print("{}: {} tests, {} frames, {} files, {:.1f} MB (open the .pvd files in "
                        "ParaView)\n",
                        summary.out, summary.tests, summary.frames, summary.files,
@@ -30,11 +41,11 @@ int runExportVtkCommand(const VtkExportOptions& options, bool quiet) {
         }
         return 0;
     } catch (const VtkExportRefused& e) {
-        fmt::print(stderr, "grainlab export vtk: {}\n", e.what());
+        error(fmt::format("grainlab export vtk: {}", e.what()));
         return 2;
     } catch (const std::exception& e) {
-        fmt::print(stderr, "grainlab export vtk: error: {} (nothing was written to {})\n", e.what(),
-                   options.out);
+        error(fmt::format("grainlab export vtk: error: {} (nothing was written to {})", e.what(),
+                          options.out));
         return 1;
     }
 }

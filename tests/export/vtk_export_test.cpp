@@ -383,6 +383,22 @@ TEST(VtkExport, RefusesBadInputNamingTheFileAndWritesNothing) {
     options.run = (dir / "text").string();
     expectRefused(options, {(dir / "text" / "run.h5").string(), "cannot be read"});
 
+    // A damaged dataset (a changed byte of the last checkpoint's normal forces): refused
+    // naming the file and the dataset, though the earlier checkpoints read well.
+    fs::create_directories(dir / "flipped");
+    const std::string finished = (dir / "finished" / "run.h5").string();
+    const std::vector<double> forces =
+        readContacts(finished, listCheckpoints(finished).back()).normalForce;
+    const std::string needle(reinterpret_cast<const char*>(forces.data()),
+                             forces.size() * sizeof(double));
+    std::string flipped = whole;
+    const std::size_t at = flipped.rfind(needle);
+    ASSERT_NE(at, std::string::npos);
+    flipped[at + 5] = static_cast<char>(flipped[at + 5] ^ 0x5a);
+    std::ofstream((dir / "flipped" / "run.h5"), std::ios::binary) << flipped;
+    options.run = (dir / "flipped").string();
+    expectRefused(options, {(dir / "flipped" / "run.h5").string(), "normal_force"});
+
     // --out an existing export: refused, its files untouched.
     options.run = (dir / "finished").string();
     options.out = (dir / "exports" / "first").string();
