@@ -54,9 +54,9 @@ auto readRun(const std::string& path, F&& read) {
         throw;
     } catch (const std::exception& e) {
         throw VtkExportRefused(fmt::format(
-            "{}: the run file cannot be read ({}); only a readable GrainLab run file (format {} "
-            "or {}) can be exported",
-            path, e.what(), kRunFileOldestReadableVersion, kRunFileFormatVersion));
+            "{}: the run file cannot be read ({}); only an undamaged GrainLab run file can be "
+            "exported",
+            path, e.what()));
     }
 }
 
