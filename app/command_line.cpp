@@ -11,6 +11,7 @@
 #include "cli/run_command.h"
 #include "common/resources.h"
 #include "common/version.h"
+#include "export/export_command.h"
 #include "report/report_command.h"
 #include "stability/stability_command.h"
 #include "study/study_command.h"
@@ -144,6 +145,37 @@ void addStabilityCommands(CLI::App& app, StabilityOptions& stability, StabilityC
     c.collect->add_flag("--quiet", stability.quiet, "print nothing but errors");
 }
 
+/// `export` and `export vtk`.
+struct ExportCommands {
+    CLI::App* exports;
+    CLI::App* vtk;
+    bool quiet = false;
+};
+void addExportCommands(CLI::App& app, VtkExportOptions& vtk, ExportCommands& c) {
+    c.exports = app.add_subcommand("export", "write a run's checkpoints in other formats");
+    c.exports->require_subcommand(1);
+    c.vtk = c.exports->add_subcommand(
+        "vtk", "each test's checkpoints as VTK XML files and a .pvd time index, for ParaView "
+               "(docs/paraview.md)");
+    c.vtk->add_option("run", vtk.run, "run folder (or its run.h5)")->required();
+    c.vtk->add_option("--out", vtk.out, "export folder, which must not exist")->required();
+    auto* every = c.vtk
+                      ->add_option("--every", vtk.every,
+                                   "every N-th checkpoint of each test, and its last (default 1)")
+                      ->check(CLI::Range(1, 1000000))
+                      ->type_name("N");
+    auto* strains = c.vtk
+                        ->add_option("--strains", vtk.strains,
+                                     "per test, the checkpoint nearest each of these eps1, "
+                                     "e.g. 0,0.01,0.05")
+                        ->delimiter(',')
+                        ->type_name("EPS1,...");
+    every->excludes(strains);
+    c.vtk->add_flag("--unfinished", vtk.unfinished,
+                    "export a run that has not finished (its checkpoints so far)");
+    c.vtk->add_flag("--quiet", c.quiet, "print nothing but errors");
+}
+
 } // namespace
 
 int runCommandLine(int argc, char** argv) {
@@ -173,6 +205,10 @@ int runCommandLine(int argc, char** argv) {
     StabilityCommands stabilityCommands;
     addStabilityCommands(app, stability, stabilityCommands);
 
+    VtkExportOptions exportVtk;
+    ExportCommands exportCommands;
+    addExportCommands(app, exportVtk, exportCommands);
+
     std::string experiment = resourcePath("experiments/quick.json");
     app.add_option("--experiment", experiment, "experiment to open in the window");
 
@@ -199,6 +235,9 @@ int runCommandLine(int argc, char** argv) {
         stability.servoFigures = writeServoFiguresHeadless;
         stability.geometryFigures = writeGeometryFiguresHeadless;
 #endif
+        if (*exportCommands.vtk) {
+            return runExportVtkCommand(exportVtk, exportCommands.quiet);
+        }
         if (*reportCommand) {
             return runReportCommand(report);
         }

@@ -31,6 +31,7 @@
 #include "grainlab/ui/scene_options_bar.h"
 #include "grainlab/ui/scene_view.h"
 #include "grainlab/ui/warning_label.h"
+#include "gui/command_process.h"
 #include "gui/duration_text.h"
 #include "gui/edited_experiment.h"
 #include "gui/report_job.h"
@@ -105,6 +106,8 @@ MainWindow::MainWindow(RunMaker maker, QWidget* parent)
     buildMenus();
     reportJob_ = new ReportJob(this);
     connect(reportJob_, &ReportJob::finished, this, &MainWindow::reportEnded);
+    paraviewExport_ = new CommandProcess(this);
+    connect(paraviewExport_, &CommandProcess::ended, this, &MainWindow::paraviewEnded);
     figureSetJob_ = new ReportJob(this);
     connect(figureSetJob_, &ReportJob::finished, this,
             [this](const QString& out, const QString& e) {
@@ -210,6 +213,11 @@ void MainWindow::buildActions() {
                            "run (or of the open run file) into its folder's report/ and open "
                            "report.html (grainlab report)"));
     connect(report_, &QAction::triggered, this, &MainWindow::writeReport);
+    paraview_ = new QAction(tr("&ParaView files…"), this);
+    paraview_->setToolTip(tr("Write every checkpoint of this run (or of the open run file) as "
+                             "VTK files with a .pvd time index per test, for ParaView (grainlab "
+                             "export vtk)"));
+    connect(paraview_, &QAction::triggered, this, &MainWindow::exportParaViewDialog);
     start_ = new QAction(tr("Start"), this);
     start_->setShortcut(Qt::Key_F5);
     start_->setToolTip(tr("Start or resume the run (F5)"));
@@ -275,6 +283,7 @@ void MainWindow::buildMenus() {
     exports->addAction(tr("Series as &CSV…"), this, &MainWindow::exportCsvDialog);
     exports->addSeparator();
     exports->addAction(tr("&Figure set into a folder…"), this, &MainWindow::exportFigureSetDialog);
+    exports->addAction(paraview_);
 }
 
 bool MainWindow::openExperiment(const QString& path, QString* error) {

@@ -38,6 +38,7 @@ class QSlider;
 namespace grainlab::ui {
 
 class ChartsPanel;
+class CommandProcess;
 class InspectorPanel;
 class ParametersPanel;
 class ReportJob;
@@ -131,12 +132,22 @@ public:
     void setGrainlabExecutable(const QString& path) { grainlab_ = path; }
     QAction* reportAction() const { return report_; }
 
+    /// Writes the ParaView files (docs/paraview.md) of the run reportSource() names into `out`, a
+    /// folder that must not exist, by a `grainlab export vtk` process the window does not wait
+    /// for (a stopped run's checkpoints so far: --unfinished). paraviewFilesWritten follows when
+    /// it has ended, at once when refused (no run, or the live run is still going).
+    void writeParaViewFiles(const QString& out);
+    QAction* paraviewAction() const { return paraview_; }
+
 signals:
     /// report.html has been written (and opened).
     void reportWritten(const QString& html);
     /// The figure set into `folder` is complete. `note` is "" when the report's figures are in
     /// it, else says why they are not (left out, or their report failed).
     void figureSetWritten(const QString& folder, const QString& note);
+    /// The ParaView export into `out` has ended: `error` is "" when it was written, else what
+    /// went wrong (the command's own message: the file and what is allowed).
+    void paraviewFilesWritten(const QString& out, const QString& error);
 
 public:
     SimulationController& controller() { return *controller_; }
@@ -185,6 +196,9 @@ private:
     void exportChartDialog(int chart);
     void exportCsvDialog();
     void exportFigureSetDialog();
+    void exportParaViewDialog();
+    /// The `grainlab export vtk` process has ended (CommandProcess::ended).
+    void paraviewEnded(int exitStatus, const QString& output, const QString& startError);
     void showError(const QString& message);
     /// Why no report can be written of reportSource() now ("" when one can): there is none, or
     /// it is the live run, still running or paused.
@@ -246,6 +260,9 @@ private:
     QAction* report_ = nullptr;
     ReportJob* reportJob_ = nullptr;    ///< File > Report…
     ReportJob* figureSetJob_ = nullptr; ///< the report's figures of the figure-set export
+    QAction* paraview_ = nullptr;
+    CommandProcess* paraviewExport_ = nullptr; ///< Export > ParaView files…
+    QString paraviewOut_;
     QString grainlab_;
     QSpinBox* stepSize_ = nullptr;
     QLabel* stage_;

@@ -1,5 +1,6 @@
 // See main_window.h: the window's files: Save experiment as…, Report…, and the exports (the
-// scene, a chart, the series as CSV, the figure set with the report's figures).
+// scene, a chart, the series as CSV, the figure set with the report's figures, the ParaView
+// files).
 #include "gui/main_window.h"
 
 #include <QCoreApplication>
@@ -17,6 +18,7 @@
 #include "grainlab/ui/figure_export.h"
 #include "grainlab/ui/parameters_panel.h"
 #include "grainlab/ui/scene_view.h"
+#include "gui/command_process.h"
 #include "gui/edited_experiment.h"
 #include "gui/report_job.h"
 
@@ -212,6 +214,65 @@ void MainWindow::exportFigureSetDialog() {
     exportFigureSet(folder, &error); // the status bar says how far it got
     if (!error.isEmpty()) {
         showError(error);
+    }
+}
+
+void MainWindow::writeParaViewFiles(const QString& out) {
+    QString why = reportRefusal();
+    if (why.isEmpty() && paraviewExport_->running()) {
+        why = tr("ParaView files are being written already");
+    }
+    if (!why.isEmpty()) {
+        showError(tr("No ParaView files now: %1.").arg(why));
+        emit paraviewFilesWritten(out, why);
+        return;
+    }
+    // The same export as `grainlab export vtk`, in a process of its own: the window goes on. A
+    // stopped run has not finished, and the user asked for what it has.
+    paraviewOut_ = out;
+    const QStringList arguments{QStringLiteral("export"),
+                                QStringLiteral("vtk"),
+                                reportSource(),
+                                QStringLiteral("--out"),
+                                out,
+                                QStringLiteral("--unfinished"),
+                                QStringLiteral("--quiet")};
+    if (!paraviewExport_->start(grainlabExecutable(), arguments)) {
+        showError(tr("ParaView files are being written already."));
+        return;
+    }
+    paraview_->setEnabled(false);
+    statusBar()->showMessage(tr("Writing ParaView files into %1…").arg(out));
+}
+
+void MainWindow::paraviewEnded(int exitStatus, const QString& output, const QString& startError) {
+    paraview_->setEnabled(true);
+    QString error;
+    if (!startError.isEmpty()) {
+        error = tr("The ParaView export could not start: %1").arg(startError);
+    } else if (exitStatus != 0) {
+        error = tr("No ParaView files written: %1").arg(output.trimmed());
+    }
+    if (error.isEmpty()) {
+        statusBar()->showMessage(
+            tr("ParaView files written: open the .pvd files of %1 in ParaView").arg(paraviewOut_),
+            10000);
+    } else {
+        showError(error);
+    }
+    emit paraviewFilesWritten(paraviewOut_, error);
+}
+
+void MainWindow::exportParaViewDialog() {
+    const QString source = reportSource();
+    const QString suggested = source.isEmpty()
+                                  ? QDir::current().filePath(QStringLiteral("paraview"))
+                                  : source + QStringLiteral("-paraview");
+    const QString out = QFileDialog::getSaveFileName(
+        this, tr("Write ParaView files into a new folder"), suggested, QString(), nullptr,
+        QFileDialog::ShowDirsOnly | QFileDialog::DontConfirmOverwrite);
+    if (!out.isEmpty()) {
+        writeParaViewFiles(out);
     }
 }
 
