@@ -3,10 +3,13 @@
 // the cursor and when the hover ends.
 #include <cmath>
 
+#include <QChart>
+#include <QImage>
 #include <QMouseEvent>
 #include <QSignalSpy>
 #include <QTest>
 #include <QValueAxis>
+#include <QXYSeries>
 
 #include <gtest/gtest.h>
 
@@ -31,7 +34,7 @@ TEST(ChartsPanel, OverlaysTestsInTheirColoursInDisplayUnits) {
     const std::vector<SeriesTable> tables{testing::makeSeries("p15kPa", 200, 0.5),
                                           testing::makeSeries("p100kPa", 150, 0.4)};
     panel.setSeries(tables);
-    ASSERT_EQ(panel.chartCount(), 13); // six of the shear tests, three of paths, four compaction
+    ASSERT_EQ(panel.chartCount(), 15); // six of the shear tests, five of paths, four compaction
     const int q = chartIndex(panel, QStringLiteral("q_over_p"));
     const int v = chartIndex(panel, QStringLiteral("epsv"));
     const int f = chartIndex(panel, QStringLiteral("fabric"));
@@ -195,6 +198,188 @@ TEST(ChartsPanel, HoverReportsAxialStrainAndMarksEveryStrainChart) {
     EXPECT_EQ(ended.count(), 1);
     EXPECT_TRUE(std::isnan(view->marker()));
     EXPECT_TRUE(std::isnan(panel.chartView(1)->marker()));
+}
+
+} // namespace
+} // namespace grainlab::ui
+
+namespace grainlab::ui {
+namespace {
+
+/// A test's table of the columns the stress-path charts read, without rows.
+SeriesTable pathTable(const std::string& test) {
+    SeriesTable t;
+    t.test = test;
+    for (const char* column : {"eps1", "p", "q", "e", "epsv", "sigma11", "sigma22"}) {
+        t.columns.push_back({column, "-"});
+    }
+    return t;
+}
+
+void addRow(SeriesTable& t, const std::string& kind, double eps1, double p, double q, double e,
+            double epsv = 0.0, double s11 = 0.0, double s22 = 0.0) {
+    t.rows.push_back({eps1, p, q, e, epsv, s11, s22});
+    t.stages.push_back(kind + " 25 kPa");
+    t.stageKinds.push_back(kind);
+}
+
+/// A drained test that hardens to q = m p by eps1 = 0.05 and then stays there to 0.2 at
+/// constant volume (a steady end), ending at void ratio `e`.
+SeriesTable steadyTest(const std::string& test, double p, double m, double e) {
+    SeriesTable t = pathTable(test);
+    for (int k = 0; k <= 200; ++k) {
+        const double eps1 = 0.001 * k;
+        const double q = m * p * std::min(1.0, eps1 / 0.05);
+        addRow(t, "shear", eps1, p, q, e, 0.0);
+    }
+    return t;
+}
+
+QImage grabbed(ChartsPanel& panel, int chart) {
+    panel.showPage(panel.definition(chart).page);
+    QTest::qWait(20);
+    return panel.chartView(chart)->grab().toImage();
+}
+
+/// True when a dark pixel (the black dashed line) lies within 3 pixels of `at`.
+bool darkNear(const QImage& image, QPointF at) {
+    for (int dy = -3; dy <= 3; ++dy) {
+        for (int dx = -3; dx <= 3; ++dx) {
+            const QColor c = image.pixelColor(int(at.x()) + dx, int(at.y()) + dy);
+            if (c.red() < 60 && c.green() < 60 && c.blue() < 60) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+// The critical state of the steady tests shown: M over their ends, q = M p′ drawn from the origin
+// in the q - p′ chart, and the line through their ends in the e - ln p′ chart (with two ends, the
+// line through both: closed form); pixels of the dashed line where the chart maps it. A test
+// still hardening at its end draws no line.
+TEST(ChartsPanel, DrawsTheCriticalStateOfTheSteadyTestsShown) {
+    ChartsPanel panel;
+    panel.resize(1000, 900);
+    panel.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
+    const std::vector<SeriesTable> tables{steadyTest("p025kPa", 25e3, 0.9, 0.20),
+                                          steadyTest("p100kPa", 100e3, 0.9, 0.17)};
+    panel.setSeries(tables);
+    const int qp = chartIndex(panel, QStringLiteral("q_vs_p"));
+    const int ep = chartIndex(panel, QStringLiteral("e_vs_ln_p"));
+    ASSERT_GE(qp, 0);
+    ASSERT_GE(ep, 0);
+    EXPECT_EQ(panel.criticalState().steadyCount(), 2);
+    EXPECT_NEAR(panel.criticalState().m.mean, 0.9, 1e-12);
+    const auto mLine = panel.criticalStatePoints(qp);
+    ASSERT_EQ(mLine.size(), 2);
+    EXPECT_EQ(mLine.front(), QPointF(0.0, 0.0));
+    EXPECT_NEAR(mLine.back().y() / mLine.back().x(), 0.9, 1e-12); // kPa against kPa
+    EXPECT_NEAR(mLine.back().x(), 100.0, 1e-9);
+    const double lambda = (0.20 - 0.17) / (std::log(100e3) - std::log(25e3));
+    const auto csl = panel.criticalStatePoints(ep);
+    ASSERT_EQ(csl.size(), 2);
+    for (const QPointF& point : csl) {
+        EXPECT_NEAR(point.y(), 0.20 - lambda * (point.x() - std::log(25e3)), 1e-12);
+    }
+    EXPECT_NEAR(csl.front().x(), std::log(25e3), 1e-12);
+    EXPECT_NEAR(csl.back().x(), std::log(100e3), 1e-12);
+    // Drawn: dark pixels at the middle of each line, where the chart maps it.
+    for (const int chart : {qp, ep}) {
+        const QImage image = grabbed(panel, chart);
+        QChart* c = panel.chartView(chart)->chart();
+        const auto line = panel.criticalStatePoints(chart);
+        QAbstractSeries* series = nullptr;
+        for (QAbstractSeries* s : c->series()) {
+            if (static_cast<QXYSeries*>(s)->points() == line) {
+                series = s;
+            }
+        }
+        ASSERT_NE(series, nullptr);
+        const QPointF middle = c->mapToPosition((line.front() + line.back()) / 2.0, series);
+        const QPointF pixel = panel.chartView(chart)->mapFromScene(middle);
+        EXPECT_TRUE(darkNear(image, pixel)) << panel.definition(chart).name.toStdString();
+    }
+
+    // A test still hardening at its end: not steady, no line.
+    SeriesTable hardening = pathTable("p050kPa");
+    for (int k = 0; k <= 200; ++k) {
+        addRow(hardening, "shear", 0.001 * k, 50e3, 50e3 * 0.005 * k, 0.18);
+    }
+    panel.setSeries({hardening});
+    EXPECT_EQ(panel.criticalState().steadyCount(), 0);
+    EXPECT_TRUE(panel.criticalStatePoints(qp).isEmpty());
+    EXPECT_TRUE(panel.criticalStatePoints(ep).isEmpty());
+}
+
+// A cyclic test: p′/p0 at the end of each cycle against the cycle (its upper peaks of eps1), and
+// its live cycle, from its last upper peak on, drawn bold over its q - eps1 loops.
+TEST(ChartsPanel, ChartsACyclicTestsPressurePerCycleAndItsLiveCycle) {
+    // eps1 a triangle wave of amplitude 0.01 in steps of 0.001 (40 records a cycle), p falling
+    // by 10 % a cycle: a quarter up, then 2 whole cycles ending at an upper peak.
+    SeriesTable t = pathTable("p025kPa-cyclic");
+    const int quarter = 10, records = 9 * quarter + 1;
+    std::vector<int> upper; // indices of the upper peaks
+    for (int k = 0; k < records; ++k) {
+        const int phase = (k + quarter) % (4 * quarter); // starts at eps1 = 0 going up
+        const double eps1 =
+            0.001 * (phase <= 2 * quarter ? phase - quarter : 3 * quarter - phase);
+        if (phase == 2 * quarter) {
+            upper.push_back(k);
+        }
+        const double cycle = double(k) / (4 * quarter);
+        const double p = 25e3 * std::pow(0.9, cycle);
+        addRow(t, "cyclic", eps1, p, 3e4 * eps1, 0.2);
+    }
+    ASSERT_EQ(upper, (std::vector<int>{10, 50, 90}));
+    ChartsPanel panel;
+    panel.resize(1000, 900);
+    panel.setSeries({t});
+    const int pc = chartIndex(panel, QStringLiteral("p_per_cycle"));
+    const int qe = chartIndex(panel, QStringLiteral("q_vs_eps1"));
+    ASSERT_GE(pc, 0);
+    const auto perCycle = panel.curvePoints(pc, t.test, "p_over_p0");
+    ASSERT_EQ(perCycle.size(), 3); // the start, the ends of the cycles 10-50 and 50-90
+    EXPECT_EQ(perCycle[0], QPointF(0.0, 1.0));
+    EXPECT_EQ(perCycle[1].x(), 1.0);
+    EXPECT_NEAR(perCycle[1].y(), std::pow(0.9, 50.0 / 40), 1e-12);
+    EXPECT_EQ(perCycle[2].x(), 2.0);
+    EXPECT_NEAR(perCycle[2].y(), std::pow(0.9, 90.0 / 40), 1e-12);
+    // The live cycle: from the last upper peak that is a reversal (50) to the end, over the
+    // whole loop's 91 records.
+    EXPECT_EQ(panel.curvePoints(qe, t.test, "q").size(), records);
+    const auto live = panel.liveCyclePoints(qe, t.test);
+    ASSERT_EQ(live.size(), records - 50);
+    EXPECT_DOUBLE_EQ(live.front().x(), 100.0 * 0.01);
+    // A monotonic test has no live cycle and no points per cycle.
+    panel.setSeries({steadyTest("p025kPa", 25e3, 0.9, 0.2)});
+    EXPECT_TRUE(panel.liveCyclePoints(qe, "p025kPa").isEmpty());
+    EXPECT_TRUE(panel.curvePoints(pc, "p025kPa", "p_over_p0").isEmpty());
+    EXPECT_TRUE(panel.curvePoints(pc, t.test, "p_over_p0").isEmpty()); // gone with its test
+}
+
+// A probe set's responses (each probe's stress minus the zero probe's) fill the envelope chart
+// as they come: 3 of 8, then all 8, on the circle they were made on.
+TEST(ChartsPanel, TheProbeEnvelopeFillsInAsTheProbesComeIn) {
+    SeriesTable t = pathTable("p025kPa-probes");
+    const double s0 = 25e3, radius = 2e3;
+    addRow(t, "probes", 0.02, s0, 0.0, 0.2, 0.0, s0 + 10.0, s0 - 10.0); // the start
+    addRow(t, "probes", 0.02, s0, 0.0, 0.2, 0.0, s0 + 5.0, s0 - 5.0);   // the zero probe
+    ChartsPanel panel;
+    panel.resize(1000, 900);
+    const int env = chartIndex(panel, QStringLiteral("probe_envelope"));
+    ASSERT_GE(env, 0);
+    for (int k = 0; k < 8; ++k) {
+        const double a = 2.0 * M_PI * k / 8;
+        addRow(t, "probes", 0.02, s0, 0.0, 0.2, 0.0, s0 + 5.0 + radius * std::cos(a),
+               s0 - 5.0 + radius * std::sin(a));
+        panel.setSeries({t});
+        const auto points = panel.curvePoints(env, t.test, "d_sigma22");
+        ASSERT_EQ(points.size(), k + 1);
+        EXPECT_NEAR(points.back().x(), 1e-3 * radius * std::cos(a), 1e-9);
+        EXPECT_NEAR(points.back().y(), 1e-3 * radius * std::sin(a), 1e-9);
+    }
 }
 
 } // namespace

@@ -10,6 +10,7 @@
 #include <QGridLayout>
 #include <QLegendMarker>
 #include <QMouseEvent>
+#include <QScatterSeries>
 #include <QTabWidget>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -17,6 +18,9 @@
 
 #include "grainlab/ui/colour_maps.h"
 #include "grainlab/ui/figure_export.h"
+#include "grainlab/path_measures.h"
+#include "grainlab/report_data.h"
+#include "grainlab/shear_metrics.h"
 
 namespace grainlab::ui {
 
@@ -72,25 +76,32 @@ std::vector<ChartDefinition> defaultChartDefinitions() {
          QStringLiteral("Z̄ [-]"),
          {{"Z_eff", QStringLiteral("Z̄"), 1.0, Qt::SolidLine}}},
         {"q_vs_p",
-         QObject::tr("Stress path: q against p′"),
+         QObject::tr("Stress path: q against p′ (critical state - -)"),
          "p",
          QStringLiteral("p′ [kPa]"),
          1e-3,
          QStringLiteral("q [kPa]"),
          {{"q", QStringLiteral("q"), 1e-3, Qt::SolidLine}},
          StageKind::Shear,
-         paths},
+         paths,
+         false,
+         ChartDefinition::Derived::None,
+         false,
+         ChartDefinition::CriticalState::StressRatio},
         {"q_vs_eps1",
-         QObject::tr("Deviator stress (a cyclic test's loops)"),
+         QObject::tr("Deviator stress (a cyclic test's loops, its live cycle bold)"),
          "eps1",
          eps1,
          100.0,
          QStringLiteral("q [kPa]"),
          {{"q", QStringLiteral("q"), 1e-3, Qt::SolidLine}},
          StageKind::Shear,
-         paths},
+         paths,
+         false,
+         ChartDefinition::Derived::None,
+         true},
         {"e_vs_ln_p",
-         QObject::tr("Void ratio against ln p′"),
+         QObject::tr("Void ratio against ln p′ (critical state line - -)"),
          "p",
          QStringLiteral("ln(p′ / 1 Pa)"),
          1.0,
@@ -98,7 +109,32 @@ std::vector<ChartDefinition> defaultChartDefinitions() {
          {{"e", QStringLiteral("e"), 1.0, Qt::SolidLine}},
          StageKind::Shear,
          paths,
-         true},
+         true,
+         ChartDefinition::Derived::None,
+         false,
+         ChartDefinition::CriticalState::VoidRatio},
+        {"p_per_cycle",
+         QObject::tr("Cyclic tests: mean stress at the end of each cycle"),
+         "cycle",
+         QStringLiteral("cycle"),
+         1.0,
+         QStringLiteral("p′/p0 [-]"),
+         {{"p_over_p0", QStringLiteral("p′/p0"), 1.0, Qt::SolidLine}},
+         StageKind::Shear,
+         paths,
+         false,
+         ChartDefinition::Derived::PressurePerCycle},
+        {"probe_envelope",
+         QObject::tr("Stress probes: response envelope"),
+         "d_sigma11",
+         QStringLiteral("Δσ11 [kPa]"),
+         1e-3,
+         QStringLiteral("Δσ22 [kPa]"),
+         {{"d_sigma22", QStringLiteral("Δσ22"), 1e-3, Qt::SolidLine}},
+         StageKind::Shear,
+         paths,
+         false,
+         ChartDefinition::Derived::ProbeEnvelope},
         {"compaction_p",
          QObject::tr("Compaction: mean stress"),
          "step",
@@ -330,6 +366,82 @@ QColor ChartsPanel::testColour(const std::string& test) const {
     return categoryColour(it == testColours_.end() ? 0 : it->second);
 }
 
+ChartsPanel::Curve& ChartsPanel::curveFor(int k, const std::string& test, const std::string& key,
+                                          bool legend, const QPen& pen, bool points) {
+    Curve& curve = curves_[{k, test, key}];
+    curve.seen = true;
+    if (!curve.series) {
+        QChart* chart = views_[k]->chart();
+        if (points) {
+            auto* scatter = new QScatterSeries();
+            scatter->setMarkerSize(7.0);
+            scatter->setColor(pen.color());
+            scatter->setBorderColor(pen.color());
+            curve.series = scatter;
+        } else {
+            curve.series = new QLineSeries();
+            curve.series->setPen(pen);
+        }
+        curve.series->setName(QString::fromStdString(test));
+        chart->addSeries(curve.series);
+        curve.series->attachAxis(chart->axes(Qt::Horizontal).front());
+        curve.series->attachAxis(chart->axes(Qt::Vertical).front());
+        curve.rows = static_cast<std::size_t>(-1);
+        // One legend entry per test (its colour); the line styles are named in the title.
+        for (QLegendMarker* marker : chart->legend()->markers(curve.series)) {
+            marker->setVisible(legend);
+            marker->setLabel(QString::fromStdString(test));
+        }
+    }
+    return curve;
+}
+
+namespace {
+
+/// The points of a derived chart (ChartDefinition::Derived) of one table, in display units;
+/// nothing when the table is not of the chart's sort.
+std::optional<QList<QPointF>> derivedPoints(const ChartDefinition& d, const SeriesTable& table) {
+    QList<QPointF> points;
+    const double yScale = d.curves.front().scale;
+    if (d.derived == ChartDefinition::Derived::PressurePerCycle) {
+        if (!isCyclicTable(table)) {
+            return std::nullopt;
+        }
+        const PressurePerCycle perCycle = pressurePerCycle(table);
+        for (std::size_t k = 0; k < perCycle.cycle.size(); ++k) {
+            points.append(QPointF(perCycle.cycle[k] * d.xScale, perCycle.ratio[k] * yScale));
+        }
+    } else if (d.derived == ChartDefinition::Derived::ProbeEnvelope) {
+        if (!isProbesTable(table)) {
+            return std::nullopt;
+        }
+        // The probes recorded so far: the envelope fills in as they come.
+        const auto responses = probeResponses(table, false);
+        for (const auto& r : responses.value_or(std::vector<std::array<double, 2>>{})) {
+            points.append(QPointF(r[0] * d.xScale, r[1] * yScale));
+        }
+    }
+    return points;
+}
+
+/// The points of a cyclic test's live cycle: from its last upper peak of x (a reversal of even
+/// index, as a cycle runs from one to the next) to its end; all of them before the first.
+QList<QPointF> liveCycleOf(const QList<QPointF>& points) {
+    std::vector<double> x;
+    x.reserve(std::size_t(points.size()));
+    for (const QPointF& p : points) {
+        x.push_back(p.x());
+    }
+    const std::vector<std::size_t> turns = reversalIndices(x);
+    std::size_t start = 0;
+    for (std::size_t k = 0; k < turns.size(); k += 2) {
+        start = turns[k];
+    }
+    return points.mid(qsizetype(start));
+}
+
+} // namespace
+
 void ChartsPanel::setSeries(const std::vector<SeriesTable>& tables) {
     for (auto& [key, curve] : curves_) {
         curve.seen = false;
@@ -361,40 +473,50 @@ void ChartsPanel::setSeries(const std::vector<SeriesTable>& tables) {
                 }
             }
         }
+        const bool cyclic = isCyclicTable(table);
         for (std::size_t k = 0; k < definitions_.size(); ++k) {
             const ChartDefinition& d = definitions_[k];
+            const int chart = static_cast<int>(k);
+            if (d.derived != ChartDefinition::Derived::None) {
+                if (table.column(d.derived == ChartDefinition::Derived::PressurePerCycle
+                                     ? "p"
+                                     : "sigma11") < 0) {
+                    continue;
+                }
+                const bool envelope = d.derived == ChartDefinition::Derived::ProbeEnvelope;
+                const std::optional<QList<QPointF>> points = derivedPoints(d, table);
+                if (!points) {
+                    continue;
+                }
+                Curve& curve = curveFor(chart, table.test, d.curves.front().column, true,
+                                        QPen(colour, 1.6), envelope);
+                if (curve.rows != table.rows.size()) {
+                    curve.series->replace(*points);
+                    curve.rows = table.rows.size();
+                }
+                continue;
+            }
             const std::vector<std::size_t>& rows = rowsOf[d.stage];
             const int xc = table.column(d.xColumn);
             if (xc < 0 || rows.empty()) {
                 continue;
             }
-            QChart* chart = views_[k]->chart();
             for (const ChartCurve& c : d.curves) {
                 const int yc = table.column(c.column);
                 if (yc < 0) {
                     continue;
                 }
-                Curve& curve = curves_[{static_cast<int>(k), table.test, c.column}];
-                curve.seen = true;
-                if (!curve.series) {
-                    curve.series = new QLineSeries();
-                    curve.series->setName(d.curves.size() > 1
-                                              ? QStringLiteral("%1 %2").arg(
-                                                    QString::fromStdString(table.test), c.label)
-                                              : QString::fromStdString(table.test));
-                    QPen pen(colour, 1.6, c.style);
-                    curve.series->setPen(pen);
-                    chart->addSeries(curve.series);
-                    curve.series->attachAxis(chart->axes(Qt::Horizontal).front());
-                    curve.series->attachAxis(chart->axes(Qt::Vertical).front());
-                    curve.rows = static_cast<std::size_t>(-1);
-                    // One legend entry per test (its colour); the line styles are named in
-                    // the chart title.
-                    for (QLegendMarker* marker : chart->legend()->markers(curve.series)) {
-                        marker->setVisible(&c == &d.curves.front());
-                        marker->setLabel(QString::fromStdString(table.test));
-                    }
+                const bool first = &c == &d.curves.front();
+                Curve& curve = curveFor(chart, table.test, c.column, first,
+                                        QPen(colour, 1.6, c.style));
+                if (d.curves.size() > 1) {
+                    curve.series->setName(QStringLiteral("%1 %2").arg(
+                        QString::fromStdString(table.test), c.label));
                 }
+                Curve* live = d.liveCycle && cyclic && first
+                                  ? &curveFor(chart, table.test, c.column + "/live cycle", false,
+                                              QPen(colour.darker(130), 3.4, c.style))
+                                  : nullptr;
                 if (curve.rows == rows.size()) {
                     continue;
                 }
@@ -412,6 +534,11 @@ void ChartsPanel::setSeries(const std::vector<SeriesTable>& tables) {
                 }
                 curve.series->replace(points);
                 curve.rows = rows.size();
+                if (live) {
+                    live->series->setName(QString::fromStdString(table.test) + tr(" live cycle"));
+                    live->series->replace(liveCycleOf(points));
+                    live->rows = rows.size();
+                }
             }
         }
     }
@@ -425,9 +552,84 @@ void ChartsPanel::setSeries(const std::vector<SeriesTable>& tables) {
             ++it;
         }
     }
+    drawCriticalState(tables);
     for (int k = 0; k < chartCount(); ++k) {
         rescale(k);
     }
+}
+
+void ChartsPanel::drawCriticalState(const std::vector<SeriesTable>& tables) {
+    try {
+        criticalState_ = criticalStateOf({ReportRun{"window", tables, {}}});
+    } catch (const std::exception&) {
+        criticalState_ = {}; // series the criterion cannot read: no line drawn
+    }
+    for (int k = 0; k < chartCount(); ++k) {
+        const ChartDefinition& d = definitions_[std::size_t(k)];
+        if (d.criticalState == ChartDefinition::CriticalState::None) {
+            continue;
+        }
+        // Across the tests' points in this chart.
+        double xMin = std::numeric_limits<double>::infinity(), xMax = -xMin;
+        for (const auto& [key, curve] : curves_) {
+            if (std::get<0>(key) != k) {
+                continue;
+            }
+            for (const QPointF& p : curve.series->points()) {
+                xMin = std::min(xMin, p.x());
+                xMax = std::max(xMax, p.x());
+            }
+        }
+        QList<QPointF> line;
+        QString name;
+        const double yScale = d.curves.front().scale;
+        if (xMin <= xMax && d.criticalState == ChartDefinition::CriticalState::StressRatio &&
+            criticalState_.m.count > 0) {
+            // q = M p′, both in their display units.
+            const double m = criticalState_.m.mean;
+            line = {QPointF(0.0, 0.0), QPointF(xMax, m * (xMax / d.xScale) * yScale)};
+            name = tr("critical state M = %1").arg(m, 0, 'f', 3);
+        } else if (xMin < xMax && d.criticalState == ChartDefinition::CriticalState::VoidRatio &&
+                   criticalState_.line) {
+            // e = e_Γ − λ ln p′, against ln p′ (x drawn as ln(xScale p′)).
+            const CriticalStateLine& csl = *criticalState_.line;
+            for (const double x : {xMin, xMax}) {
+                line.append(QPointF(x, csl.voidRatioAt(std::exp(x) / d.xScale) * yScale));
+            }
+            name = QString::fromStdString(csl.equation());
+        }
+        QChart* chart = views_[std::size_t(k)]->chart();
+        QLineSeries*& series = criticalStateLines_[k];
+        if (line.isEmpty()) {
+            if (series) {
+                chart->removeSeries(series);
+                delete series;
+                series = nullptr;
+            }
+            continue;
+        }
+        if (!series) {
+            series = new QLineSeries();
+            series->setPen(QPen(Qt::black, 1.4, Qt::DashLine));
+            chart->addSeries(series);
+            series->attachAxis(chart->axes(Qt::Horizontal).front());
+            series->attachAxis(chart->axes(Qt::Vertical).front());
+        }
+        series->setName(name);
+        series->replace(line);
+    }
+}
+
+QList<QPointF> ChartsPanel::liveCyclePoints(int chart, const std::string& test) const {
+    const ChartDefinition& d = definitions_[std::size_t(chart)];
+    const auto it = curves_.find({chart, test, d.curves.front().column + "/live cycle"});
+    return it == curves_.end() ? QList<QPointF>{} : it->second.series->points();
+}
+
+QList<QPointF> ChartsPanel::criticalStatePoints(int chart) const {
+    const auto it = criticalStateLines_.find(chart);
+    return it == criticalStateLines_.end() || !it->second ? QList<QPointF>{}
+                                                          : it->second->points();
 }
 
 void ChartsPanel::resizeEvent(QResizeEvent* event) {

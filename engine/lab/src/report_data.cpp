@@ -19,22 +19,6 @@ struct TestKey {
     double pressure = 0;
 };
 
-/// True for a table whose test rows are a cyclic test's (its eps1 goes back and forth: no
-/// curve against eps1 on a common grid, no steady end).
-bool isCyclicTable(const SeriesTable& t) {
-    return std::find(t.stageKinds.begin(), t.stageKinds.end(), "cyclic") != t.stageKinds.end();
-}
-
-/// True for a table of stress probes (a start, a zero probe, one record per probe).
-bool isProbesTable(const SeriesTable& t) {
-    return std::find(t.stageKinds.begin(), t.stageKinds.end(), "probes") != t.stageKinds.end();
-}
-
-/// Neither cyclic nor probes: a test whose records follow eps1 one way.
-bool isMonotonicTable(const SeriesTable& t) {
-    return !isCyclicTable(t) && !isProbesTable(t);
-}
-
 /// Every test of the runs (by name) of one sort (monotonic: drained, constant volume, paths;
 /// cyclic; probes), in the order of their confining pressures.
 std::vector<TestKey> testsOf(const std::vector<ReportRun>& runs,
@@ -222,23 +206,6 @@ ReportLine dilatancyLine(const std::vector<ReportRun>& runs, const TestKey& key,
     return line;
 }
 
-/// The responses of a probes table: each probe's (d sigma11, d sigma22) minus the zero probe's
-/// (rows: the start, the zero probe, the K probes); nothing when K is not even and >= 4.
-std::optional<std::vector<std::array<double, 2>>> probeResponses(const SeriesTable& t) {
-    const std::vector<std::size_t> rows = shearRows(t);
-    const int s11 = t.column("sigma11"), s22 = t.column("sigma22");
-    if (rows.size() < 6 || (rows.size() - 2) % 2 != 0 || s11 < 0 || s22 < 0) {
-        return std::nullopt;
-    }
-    const auto& zero = t.rows[rows[1]];
-    std::vector<std::array<double, 2>> out;
-    for (std::size_t k = 2; k < rows.size(); ++k) {
-        out.push_back({t.rows[rows[k]][std::size_t(s11)] - zero[std::size_t(s11)],
-                       t.rows[rows[k]][std::size_t(s22)] - zero[std::size_t(s22)]});
-    }
-    return out;
-}
-
 /// One run's points of a test as a line of its own (no scatter: one run at each point).
 ReportLine runLine(const ReportRun& run, const TestKey& key, std::vector<double> x,
                    std::vector<double> y) {
@@ -311,6 +278,67 @@ std::optional<LinearFit> fitOfTest(const SeriesTable& t) {
 
 } // namespace
 
+bool isCyclicTable(const SeriesTable& t) {
+    return std::find(t.stageKinds.begin(), t.stageKinds.end(), "cyclic") != t.stageKinds.end();
+}
+
+bool isProbesTable(const SeriesTable& t) {
+    return std::find(t.stageKinds.begin(), t.stageKinds.end(), "probes") != t.stageKinds.end();
+}
+
+bool isMonotonicTable(const SeriesTable& t) {
+    return !isCyclicTable(t) && !isProbesTable(t);
+}
+
+std::optional<std::vector<std::array<double, 2>>> probeResponses(const SeriesTable& t,
+                                                                  bool complete) {
+    const std::vector<std::size_t> rows = shearRows(t);
+    const int s11 = t.column("sigma11"), s22 = t.column("sigma22");
+    const bool enough = complete ? rows.size() >= 6 && (rows.size() - 2) % 2 == 0
+                                 : rows.size() >= 3;
+    if (!enough || s11 < 0 || s22 < 0) {
+        return std::nullopt;
+    }
+    const auto& zero = t.rows[rows[1]];
+    std::vector<std::array<double, 2>> out;
+    for (std::size_t k = 2; k < rows.size(); ++k) {
+        out.push_back({t.rows[rows[k]][std::size_t(s11)] - zero[std::size_t(s11)],
+                       t.rows[rows[k]][std::size_t(s22)] - zero[std::size_t(s22)]});
+    }
+    return out;
+}
+
+std::vector<std::size_t> upperPeaks(const std::vector<double>& eps1) {
+    // Reversals 0, 2, 4, ..., and the last record when the test ended on one (a test that made
+    // all its cycles ends at an upper peak).
+    const std::vector<std::size_t> turns = reversalIndices(eps1);
+    std::vector<std::size_t> peaks;
+    for (std::size_t k = 0; k < turns.size(); k += 2) {
+        peaks.push_back(turns[k]);
+    }
+    if (!turns.empty() && turns.size() % 2 == 0 && eps1.back() >= eps1[turns.front()] - 1e-12) {
+        peaks.push_back(eps1.size() - 1);
+    }
+    return peaks;
+}
+
+PressurePerCycle pressurePerCycle(const SeriesTable& t) {
+    const Curve eps1 = shearCurve(t, "eps1"), p = shearCurve(t, "p");
+    PressurePerCycle out;
+    if (p.y.empty()) {
+        return out;
+    }
+    out.cycle = {0.0};
+    out.ratio = {1.0};
+    const double p0 = p.y.front();
+    const std::vector<std::size_t> peaks = upperPeaks(eps1.y);
+    for (std::size_t k = 1; k < peaks.size(); ++k) {
+        out.cycle.push_back(double(k));
+        out.ratio.push_back(p0 > 0 ? p.y[peaks[k]] / p0 : 0.0);
+    }
+    return out;
+}
+
 std::optional<LinearFit> fitLine(const std::vector<double>& x, const std::vector<double>& y) {
     const std::size_t n = std::min(x.size(), y.size());
     if (n < 2) {
@@ -363,8 +391,9 @@ CriticalStateSummary criticalStateOf(const std::vector<ReportRun>& runs,
             }
             const Curve q = shearCurve(table, "q"), p = shearCurve(table, "p");
             const Curve epsv = shearCurve(table, "epsv"), e = shearCurve(table, "e");
-            if (q.y.empty()) {
-                continue;
+            if (q.y.empty() || p.y.size() != q.y.size() || epsv.y.size() != q.y.size() ||
+                e.y.size() != q.y.size()) {
+                continue; // a table without the columns the criterion reads
             }
             TestEndState end;
             end.run = run.name;
@@ -604,24 +633,9 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
                     continue;
                 }
                 loops.lines.push_back(runLine(run, key, q.x, q.y));
-                std::vector<double> cycle{0.0}, ratio{1.0};
-                const double p0 = p.y.front();
-                // The upper peaks: reversals 0, 2, 4, ..., and the last record when the test
-                // ended on one (a test that made all its cycles ends at an upper peak).
-                const std::vector<std::size_t> turns = reversalIndices(q.x);
-                std::vector<std::size_t> peaks;
-                for (std::size_t k = 0; k < turns.size(); k += 2) {
-                    peaks.push_back(turns[k]);
-                }
-                if (!turns.empty() && turns.size() % 2 == 0 &&
-                    q.x.back() >= q.x[turns.front()] - 1e-12) {
-                    peaks.push_back(q.x.size() - 1);
-                }
-                for (std::size_t k = 1; k < peaks.size(); ++k) {
-                    cycle.push_back(double(k));
-                    ratio.push_back(p0 > 0 ? p.y[peaks[k]] / p0 : 0.0);
-                }
-                cycles.lines.push_back(runLine(run, key, std::move(cycle), std::move(ratio)));
+                PressurePerCycle perCycle = pressurePerCycle(t);
+                cycles.lines.push_back(runLine(run, key, std::move(perCycle.cycle),
+                                               std::move(perCycle.ratio)));
             }
         }
         cycles.note = "p′/p0 at each upper peak of ε1 (a cycle's end), cycle 0 the test's start";

@@ -6,6 +6,8 @@
 // of each test, as shear_metrics.h takes them): no Qt, no files, any thread. The report command
 // writes these as CSV and draws them; the tests check them against hand computations.
 
+#include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,6 +72,32 @@ struct ReportOptions {
     int gridPoints = 201;       ///< points of the common eps1 axis
     double dilatancyWindow = 0.005; ///< the eps1 window of the smoothed dilatancy index [-]
 };
+
+/// True for a table whose test rows are a cyclic test's (its eps1 goes back and forth: no curve
+/// against eps1 on a common grid, no steady end).
+bool isCyclicTable(const SeriesTable& t);
+/// True for a table of stress probes (a start, a zero probe, one record per probe).
+bool isProbesTable(const SeriesTable& t);
+/// Neither cyclic nor probes: a test whose records follow eps1 one way.
+bool isMonotonicTable(const SeriesTable& t);
+
+/// The responses of a probes table: each probe's (d sigma11, d sigma22) minus the zero probe's
+/// (rows: the start, the zero probe, the K probes); nothing when K is not even and >= 4. With
+/// `complete` false, the responses of the probes recorded so far (a probe set still running),
+/// nothing before the first.
+std::optional<std::vector<std::array<double, 2>>> probeResponses(const SeriesTable& t,
+                                                                  bool complete = true);
+
+/// The upper peaks of a cyclic test's eps1 (indices): its reversals 0, 2, 4, ... (a cycle runs
+/// from one to the next), and the last record when the test ended on one.
+std::vector<std::size_t> upperPeaks(const std::vector<double>& eps1);
+
+/// p'/p0 at the end of each cycle of a cyclic table's test rows (at the upper peaks after the
+/// first), cycle 0 being the test's start (ratio 1); empty for a table without test rows.
+struct PressurePerCycle {
+    std::vector<double> cycle, ratio;
+};
+PressurePerCycle pressurePerCycle(const SeriesTable& t);
 
 /// The end of one test of one run, as the critical state reads it.
 struct TestEndState {

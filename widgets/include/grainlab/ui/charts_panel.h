@@ -4,7 +4,10 @@
 // coordination Z, Z_eff and sliding index S, void-cell count N_v/N_vi, and Z_eff against
 // N_v/N_vi, drawn from the rows recorded during shear. "Compaction": mean stress p, void ratio e,
 // coordination Z and unbalanced-force index I_uf against step, drawn from the rows recorded
-// during compaction (the compaction series). Several tests overlay
+// during compaction (the compaction series). "Stress paths": q against p′ and e against ln p′
+// with the critical state of the steady tests shown (report_data.h: criticalStateOf), q against
+// eps1 with a cyclic test's live cycle in bold, p′/p0 at the end of each cycle of a cyclic test,
+// and a probe set's response envelope as it fills. Several tests overlay
 // in one chart, one colour per test, one line style per quantity. Column names are the CSV
 // contract of docs/measures.md. Hovering a chart marks the point under the cursor and reports
 // its eps1, and reports when the hover ends (the cursor leaves the plot area).
@@ -21,6 +24,7 @@
 #include <QString>
 #include <QWidget>
 
+#include "grainlab/report_data.h"
 #include "grainlab/series.h"
 #include "grainlab/stage_kind.h"
 
@@ -51,6 +55,18 @@ struct ChartDefinition {
     QString page = QObject::tr("Shear tests");
     /// x drawn as ln(xScale * value) (a value <= 0 is left out), e.g. ln(p′ / 1 Pa).
     bool xLogarithm = false;
+    /// Points computed from a whole table instead of read from two columns: p′/p0 at the end
+    /// of each cycle of a cyclic test (x the cycle), or the responses of a probe set (Δσ11,
+    /// Δσ22, drawn as points as the probes come in).
+    enum class Derived { None, PressurePerCycle, ProbeEnvelope };
+    Derived derived = Derived::None;
+    /// A cyclic test's live cycle (from its last upper peak of ε1 on) drawn over its curve in a
+    /// thicker line.
+    bool liveCycle = false;
+    /// The critical state of the monotonic tests shown (their steady ends) drawn as a dashed
+    /// black line: q = M p′ in a q - p′ chart, e = e_Γ − λ ln p′ in an e - ln p′ chart.
+    enum class CriticalState { None, StressRatio, VoidRatio };
+    CriticalState criticalState = CriticalState::None;
 };
 
 /// The charts in display order: the six of the shear tests, then the four of the compaction.
@@ -108,6 +124,13 @@ public:
     QList<QPointF> curvePoints(int chart, const std::string& test, const std::string& column) const;
     /// The colour given to a test (stable while the test is shown).
     QColor testColour(const std::string& test) const;
+    /// The live cycle drawn over the curve of `test` in chart `chart` (display units); empty
+    /// when the chart draws none or the test is not cyclic.
+    QList<QPointF> liveCyclePoints(int chart, const std::string& test) const;
+    /// The critical-state line drawn in chart `chart` (display units), empty when there is none;
+    /// and what it was computed from: the steady ends of the monotonic tests shown.
+    QList<QPointF> criticalStatePoints(int chart) const;
+    const CriticalStateSummary& criticalState() const { return criticalState_; }
 
     /// Writes chart `chart` to `path` (.png, .svg or .pdf) at `size` pixels. Returns false and
     /// sets `error` on failure.
@@ -124,11 +147,16 @@ protected:
 
 private:
     struct Curve {
-        QLineSeries* series = nullptr;
+        QXYSeries* series = nullptr;
         std::size_t rows = 0;
         bool seen = false;
     };
     void rescale(int chart);
+    /// The curve (chart, test, key), made on first use in the test's colour.
+    Curve& curveFor(int chart, const std::string& test, const std::string& key, bool legend,
+                    const QPen& pen, bool points = false);
+    /// The critical state of `tables` drawn in the charts that show it.
+    void drawCriticalState(const std::vector<SeriesTable>& tables);
 
     std::vector<ChartDefinition> definitions_;
     std::vector<HoverChartView*> views_;
@@ -136,6 +164,8 @@ private:
     /// (chart, test, column) -> curve.
     std::map<std::tuple<int, std::string, std::string>, Curve> curves_;
     bool shearOnly_ = true;
+    CriticalStateSummary criticalState_;
+    std::map<int, QLineSeries*> criticalStateLines_; ///< chart -> its line
     QTabWidget* tabs_ = nullptr;
 };
 
