@@ -12,6 +12,7 @@
 #include "common/resources.h"
 #include "common/version.h"
 #include "export/export_command.h"
+#include "report/checkpoint_picture.h"
 #include "report/report_command.h"
 #include "stability/stability_command.h"
 #include "study/study_command.h"
@@ -145,13 +146,15 @@ void addStabilityCommands(CLI::App& app, StabilityOptions& stability, StabilityC
     c.collect->add_flag("--quiet", stability.quiet, "print nothing but errors");
 }
 
-/// `export` and `export vtk`.
+/// `export`, `export vtk` and `export picture`.
 struct ExportCommands {
     CLI::App* exports;
     CLI::App* vtk;
+    CLI::App* picture;
     bool quiet = false;
 };
-void addExportCommands(CLI::App& app, VtkExportOptions& vtk, ExportCommands& c) {
+void addExportCommands(CLI::App& app, VtkExportOptions& vtk, CheckpointPictureOptions& picture,
+                       ExportCommands& c) {
     c.exports = app.add_subcommand("export", "write a run's checkpoints in other formats");
     c.exports->require_subcommand(1);
     c.vtk = c.exports->add_subcommand(
@@ -174,6 +177,32 @@ void addExportCommands(CLI::App& app, VtkExportOptions& vtk, ExportCommands& c) 
     c.vtk->add_flag("--unfinished", vtk.unfinished,
                     "export a run that has not finished (its checkpoints so far)");
     c.vtk->add_flag("--quiet", c.quiet, "print nothing but errors");
+
+    c.picture = c.exports->add_subcommand(
+        "picture", "one checkpoint drawn as the window draws it, as a PNG, SVG or PDF file "
+                   "(docs/paraview.md)");
+    c.picture->add_option("run", picture.run, "run folder (or its run.h5)")->required();
+    c.picture->add_option("--test", picture.test, "the test, e.g. p015kPa")->required();
+    c.picture->add_option("--strain", picture.strain,
+                          "eps1 of the checkpoint to draw: the test's nearest (default 0)");
+    c.picture->add_option("--out", picture.out, "picture file (.png, .svg, .pdf), must not exist")
+        ->required();
+    c.picture->add_option("--colouring", picture.colouring, "grain colours")
+        ->check(CLI::IsMember({"rotation", "size", "coordination", "load-bearing", "uniform"}))
+        ->capture_default_str();
+    c.picture->add_option("--chains", picture.chains, "force chains")
+        ->check(CLI::IsMember({"off", "strong", "all"}))
+        ->capture_default_str();
+    c.picture->add_option("--void-cells", picture.voidCells, "void-cell shading")
+        ->check(CLI::IsMember({"off", "valence", "area"}))
+        ->capture_default_str();
+    c.picture->add_option("--size", picture.size, "pixels of the square picture")
+        ->check(CLI::Range(64, 8192))
+        ->capture_default_str();
+    c.picture->add_option("--rotation-range", picture.rotationRange,
+                          "|rotation| [rad] at the ends of the colour scale")
+        ->check(CLI::Range(1e-6, 10.0))
+        ->capture_default_str();
 }
 
 } // namespace
@@ -206,8 +235,9 @@ int runCommandLine(int argc, char** argv) {
     addStabilityCommands(app, stability, stabilityCommands);
 
     VtkExportOptions exportVtk;
+    CheckpointPictureOptions exportPicture;
     ExportCommands exportCommands;
-    addExportCommands(app, exportVtk, exportCommands);
+    addExportCommands(app, exportVtk, exportPicture, exportCommands);
 
     std::string experiment = resourcePath("experiments/quick.json");
     app.add_option("--experiment", experiment, "experiment to open in the window");
@@ -237,6 +267,14 @@ int runCommandLine(int argc, char** argv) {
 #endif
         if (*exportCommands.vtk) {
             return runExportVtkCommand(exportVtk, exportCommands.quiet);
+        }
+        if (*exportCommands.picture) {
+#ifdef GRAINLAB_WITH_GUI
+            return runCheckpointPictureCommand(exportPicture);
+#else
+            fmt::print(stderr, "grainlab export picture: this grainlab was built without Qt\n");
+            return 2;
+#endif
         }
         if (*reportCommand) {
             return runReportCommand(report);

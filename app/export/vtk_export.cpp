@@ -171,7 +171,8 @@ VtkPolyData grainCells(const SimulationState& state, const StoredContacts& conta
         outlines.push_back(outlinePolygon(shape, kOutlineTolerance * shape.width));
     }
     std::vector<std::int32_t> id(n), coordination(n, 0);
-    std::vector<double> width(n), aspect(n), orientation(n), velocity, omega(n), displacement;
+    std::vector<double> width(n), aspect(n), orientation(n), velocity, omega(n), rotation(n);
+    std::vector<double> displacement;
     std::vector<double> centre;
     for (std::size_t c = 0; c < contacts.first.size(); ++c) {
         ++coordination[std::size_t(contacts.first[c])];
@@ -196,6 +197,7 @@ VtkPolyData grainCells(const SimulationState& state, const StoredContacts& conta
         orientation[i] = theta;
         velocity.insert(velocity.end(), {state.grains.v1[i], state.grains.v2[i], 0.0});
         omega[i] = state.grains.omega[i];
+        rotation[i] = theta - start.grains.theta[i];
         displacement.insert(displacement.end(), {state.grains.x1[i] - start.grains.x1[i],
                                                  state.grains.x2[i] - start.grains.x2[i], 0.0});
         centre.insert(centre.end(), {cx, cy, 0.0});
@@ -207,6 +209,7 @@ VtkPolyData grainCells(const SimulationState& state, const StoredContacts& conta
     out.cellData.push_back(float64Array("orientation", std::move(orientation)));
     out.cellData.push_back(float64Array("velocity", std::move(velocity), 3));
     out.cellData.push_back(float64Array("angular_velocity", std::move(omega)));
+    out.cellData.push_back(float64Array("rotation", std::move(rotation)));
     out.cellData.push_back(int32Array("coordination", std::move(coordination)));
     out.cellData.push_back(float64Array("displacement", std::move(displacement), 3));
     return out;

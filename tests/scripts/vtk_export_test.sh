@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # `grainlab export vtk` on a real run, read back with VTK's own reader (Debian's python3-vtk9)
 # and compared with the run file's checkpoints (h5py): every array of every file (ids, widths,
-# orientations, velocities, coordination, displacement since the test's start, contact forces
-# to the bit, strong/sliding flags, void cells), the grains' outlines within the sampling
-# tolerance of the exact ovals and closed about their centres, contacts through the periodic
-# boundary as two halves, the .pvd listing every file with increasing times, --every and
+# orientations, velocities, coordination, rotation and displacement since the test's start,
+# contact forces to the bit, strong/sliding flags, void cells), the grains' outlines within the
+# sampling tolerance of the exact ovals and closed about their centres, contacts through the
+# periodic boundary as two halves, the .pvd listing every file with increasing times, --every and
 # --strains, and the refusals (not a run folder, a damaged run file, --out an existing export)
 # with exit status 2, a message naming the file, and nothing overwritten.
 # Skipped (exit 77) only when no python3 with vtk, h5py and numpy is found.
@@ -165,6 +165,8 @@ with h5py.File(run_file, "r") as f:
                                     axis=1)
             check(same_bits(cell_array(grains, "displacement"), displacement),
                   f"{where}: displacement")
+            check(same_bits(cell_array(grains, "rotation"), g["theta"][:] - s["theta"][:]),
+                  f"{where}: rotation")
             # The outlines: every vertex on the exact oval (body frame), the polygon missing at
             # most perimeter x 1 % of the width of its area, closed about its wrapped centre.
             polys, points = cells(grains)
