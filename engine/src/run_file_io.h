@@ -238,33 +238,34 @@ inline std::string objectName(const H5::IdComponent& object) {
     return n > 0 ? std::string(name) : std::string("?");
 }
 
-/// Datasets of at least this many values are compressed (the checkpoints' grains, contacts and
-/// void cells); smaller ones, and the series, whose last chunk is rewritten at every record,
-/// are not.
-constexpr hsize_t kCompressFrom = 512;
+/// Datasets of at least this many bytes are compressed (a checkpoint's grains, contacts, void
+/// cells and runner state); smaller ones are not, nor the series, whose last chunk is rewritten
+/// at every record.
+constexpr hsize_t kCompressFromBytes = 4096;
 
-/// zlib's level: 1 is within a few per cent of the best size on a checkpoint's doubles, and
-/// several times faster than the default 6 (docs/formats.md).
+/// zlib's level: on a checkpoint of the reference run, level 6 gains 1.6 % of size over level 1
+/// for 60 % more time (docs/formats.md).
 constexpr unsigned kDeflateLevel = 1;
 
 /// The filters of a dataset's chunks, in the order they are applied on writing: for a large
 /// dataset the shuffle (each value's bytes regrouped by significance, so that zlib finds the
 /// exponents' repetition) and deflate (zlib, HDF5's own filters: h5py and h5dump read them);
 /// then Fletcher32, on the stored bytes, so that damage is found before anything is inflated.
-inline void addChunkFilters(H5::DSetCreatPropList& p, hsize_t values) {
-    if (values >= kCompressFrom) {
+inline void addChunkFilters(H5::DSetCreatPropList& p, hsize_t bytes) {
+    if (bytes >= kCompressFromBytes) {
         p.setShuffle();
         p.setDeflate(kDeflateLevel);
     }
     p.setFletcher32();
 }
 
-/// Checksummed, chunked layout of a one-dimensional dataset of `n` values, compressed when large.
-inline H5::DSetCreatPropList checksummedLayout(hsize_t n) {
+/// Checksummed, chunked layout of a one-dimensional dataset of `n` values of `valueBytes`
+/// bytes each, compressed when large.
+inline H5::DSetCreatPropList checksummedLayout(hsize_t n, std::size_t valueBytes) {
     H5::DSetCreatPropList p;
     const hsize_t chunk = std::clamp<hsize_t>(n, 1, 65536);
     p.setChunk(1, &chunk);
-    addChunkFilters(p, n);
+    addChunkFilters(p, n * valueBytes);
     return p;
 }
 
@@ -460,7 +461,8 @@ void writeArray(H5::Group& group, const std::string& name, const T* data, std::s
     const H5::DataSpace space =
         n > 0 ? H5::DataSpace(1, &dims) : H5::DataSpace(1, &dims, &unlimited);
     H5::DataSet ds =
-        group.createDataSet(name, H5Types<T>::file(), space, checksummedLayout(n), writeThrough());
+        group.createDataSet(name, H5Types<T>::file(), space, checksummedLayout(n, sizeof(T)),
+                            writeThrough());
     if (n > 0) {
         ds.write(data, H5Types<T>::memory());
     }
@@ -531,7 +533,8 @@ inline void writeStringDataset(H5::Group& group, const std::string& name, const 
     const H5::StrType t = fixedStringType(text.size());
     const hsize_t one = 1;
     H5::DataSet ds =
-        group.createDataSet(name, t, H5::DataSpace(1, &one), checksummedLayout(1), writeThrough());
+        group.createDataSet(name, t, H5::DataSpace(1, &one), checksummedLayout(1, t.getSize()),
+                            writeThrough());
     std::vector<char> buffer(t.getSize(), '\0');
     std::copy(text.begin(), text.end(), buffer.begin());
     ds.write(buffer.data(), t);
@@ -568,7 +571,8 @@ inline void writeStringArray(H5::Group& group, const std::string& name,
     const hsize_t n = texts.size(), unlimited = H5S_UNLIMITED;
     // An empty dataset is extendible (a chunk may not exceed fixed dimensions of 0).
     const H5::DataSpace space = n > 0 ? H5::DataSpace(1, &n) : H5::DataSpace(1, &n, &unlimited);
-    H5::DataSet ds = group.createDataSet(name, t, space, checksummedLayout(n), writeThrough());
+    H5::DataSet ds =
+        group.createDataSet(name, t, space, checksummedLayout(n, t.getSize()), writeThrough());
     std::vector<char> buffer(size * texts.size(), '\0');
     for (std::size_t k = 0; k < texts.size(); ++k) {
         std::copy(texts[k].begin(), texts[k].end(), buffer.begin() + k * size);
@@ -618,7 +622,7 @@ void writeMatrix(H5::Group& group, const std::string& name, const std::vector<T>
     const hsize_t chunk[2] = {std::max<hsize_t>(1, rows), std::max<hsize_t>(1, columns)};
     H5::DSetCreatPropList layout;
     layout.setChunk(2, chunk);
-    addChunkFilters(layout, hsize_t(rows) * columns);
+    addChunkFilters(layout, hsize_t(rows) * columns * sizeof(T));
     H5::DataSet ds = group.createDataSet(name, H5Types<T>::file(), H5::DataSpace(2, dims), layout,
                                          writeThrough());
     if (!values.empty()) {
