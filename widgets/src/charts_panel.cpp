@@ -626,6 +626,15 @@ QList<QPointF> ChartsPanel::liveCyclePoints(int chart, const std::string& test) 
     return it == curves_.end() ? QList<QPointF>{} : it->second.series->points();
 }
 
+bool ChartsPanel::hasCurves(int chart) const {
+    for (const auto& [key, curve] : curves_) {
+        if (std::get<0>(key) == chart && !curve.series->points().isEmpty()) {
+            return true;
+        }
+    }
+    return false;
+}
+
 QList<QPointF> ChartsPanel::criticalStatePoints(int chart) const {
     const auto it = criticalStateLines_.find(chart);
     return it == criticalStateLines_.end() || !it->second ? QList<QPointF>{}

@@ -123,6 +123,10 @@ QStringList exportFigureSet(const QString& folder, const SceneView* scene,
             written << path;
         }
         for (int k = 0; charts && k < charts->chartCount(); ++k) {
+            if (charts->definition(k).derived != ChartDefinition::Derived::None &&
+                !charts->hasCurves(k)) {
+                continue; // the cycles' or the probes' chart of a run without such a test
+            }
             const QString path =
                 dir.filePath(charts->definition(k).name + QLatin1Char('.') + format);
             if (!charts->exportChart(k, path, options.chartSize, error)) {

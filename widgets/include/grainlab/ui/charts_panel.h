@@ -127,6 +127,8 @@ public:
     /// The live cycle drawn over the curve of `test` in chart `chart` (display units); empty
     /// when the chart draws none or the test is not cyclic.
     QList<QPointF> liveCyclePoints(int chart, const std::string& test) const;
+    /// True when chart `chart` draws something (a test's curve or points).
+    bool hasCurves(int chart) const;
     /// The critical-state line drawn in chart `chart` (display units), empty when there is none;
     /// and what it was computed from: the steady ends of the monotonic tests shown.
     QList<QPointF> criticalStatePoints(int chart) const;

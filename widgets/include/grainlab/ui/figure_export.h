@@ -42,7 +42,8 @@ struct FigureSetOptions {
     bool csv = true; ///< also write each test's series as <test>.csv
 };
 
-/// Writes scene.<fmt>, <chart name>.<fmt> for every chart, and <test>.csv into `folder`
+/// Writes scene.<fmt>, <chart name>.<fmt> for every chart (but the charts of cycles and of probes
+/// when the run has no such test), and <test>.csv into `folder`
 /// (created if needed). Returns the files written; sets `error` and stops at the first failure.
 QStringList exportFigureSet(const QString& folder, const SceneView* scene,
                             const ChartsPanel* charts, const std::vector<SeriesTable>& series,
