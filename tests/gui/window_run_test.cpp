@@ -286,5 +286,74 @@ TEST(WindowRun, AConstantVolumeTestChosenInTheParametersRunsAndDrawsItsStressPat
     EXPECT_GT(coloured, 50) << "the stress path is not drawn";
 }
 
+// A cyclic test at constant volume run in the window: its q - eps1 loops reverse (the chart's
+// points turn back and forth in eps1), its live cycle is drawn bold over them (pixels of the
+// darker colour), and the chart of p'/p0 per cycle gets a point for each cycle ended.
+TEST(WindowRun, ACyclicTestRunsAndDrawsItsLoopsLiveCycleAndPressurePerCycle) {
+    const QString runs = freshFolder(QStringLiteral("cyclic"));
+    const std::string path = GRAINLAB_SOURCE_DIR "/resources/experiments/quick.json";
+    auto j = nlohmann::ordered_json::parse(readExperimentFile(path).sourceText);
+    j["threads"] = 1;
+    j["grains"]["count"] = 120;
+    j["compaction"]["pressures"] = {15e3};
+    j["shear"]["pressures"] = {15e3};
+    j["test"] = {{"kind", "cyclic"}, {"drainage", "constant_volume"}, {"amplitude", 1e-3},
+                 {"cycles", 3}};
+    MainWindow w;
+    w.setRunsFolder(runs);
+    w.setExperiment(parseExperimentText(j.dump(2), path));
+    w.resize(1400, 900);
+    w.show();
+    click(w, w.startAction());
+    ASSERT_TRUE(waitFor([&] { return state(w) == RunState::Finished; }, 180000))
+        << w.controller().status().error;
+    w.refresh();
+    const std::string test = "p015kPa-cyclic";
+    ChartsPanel* charts = w.chartsPanel();
+    int loops = -1, perCycle = -1;
+    for (int k = 0; k < charts->chartCount(); ++k) {
+        if (charts->definition(k).name == QStringLiteral("q_vs_eps1")) {
+            loops = k;
+        }
+        if (charts->definition(k).name == QStringLiteral("p_per_cycle")) {
+            perCycle = k;
+        }
+    }
+    ASSERT_GE(loops, 0);
+    ASSERT_GE(perCycle, 0);
+    const auto points = charts->curvePoints(loops, test, "q");
+    ASSERT_GT(points.size(), 20);
+    int turns = 0;
+    for (int k = 1; k + 1 < points.size(); ++k) {
+        const double in = points[k].x() - points[k - 1].x(), out = points[k + 1].x() - points[k].x();
+        turns += in * out < 0;
+    }
+    EXPECT_GE(turns, 5) << "3 cycles reverse eps1 at least 5 times between their ends";
+    const auto live = charts->liveCyclePoints(loops, test);
+    ASSERT_FALSE(live.isEmpty());
+    EXPECT_LT(live.size(), points.size());
+    EXPECT_EQ(live.back(), points.back());
+    EXPECT_GE(charts->curvePoints(perCycle, test, "p_over_p0").size(), 3); // start and 2+ ends
+
+    charts->showPage(QStringLiteral("Stress paths"));
+    QTest::qWait(100);
+    const QImage image = charts->chartView(loops)->grab().toImage();
+    const QColor bold = charts->testColour(test).darker(130);
+    const QRect plot = charts->chartView(loops)
+                           ->mapFromScene(charts->chartView(loops)->chart()->plotArea())
+                           .boundingRect()
+                           .intersected(image.rect());
+    int boldPixels = 0;
+    for (int y = plot.top(); y <= plot.bottom(); ++y) {
+        for (int x = plot.left(); x <= plot.right(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            boldPixels += std::abs(c.red() - bold.red()) + std::abs(c.green() - bold.green()) +
+                              std::abs(c.blue() - bold.blue()) <
+                          20;
+        }
+    }
+    EXPECT_GT(boldPixels, 50) << "the live cycle is not drawn";
+}
+
 } // namespace
 } // namespace grainlab::ui
