@@ -72,6 +72,20 @@ Result runGrainlab(const std::string& arguments) {
     return r;
 }
 
+/// `grainlab run experiment --out out --quiet` started as a child process (its output
+/// discarded), not waited for: its pid, or -1.
+pid_t startRun(const fs::path& experiment, const fs::path& out) {
+    const pid_t child = fork();
+    if (child == 0) {
+        std::freopen("/dev/null", "w", stderr);
+        std::freopen("/dev/null", "w", stdout);
+        execl(GRAINLAB_EXE, GRAINLAB_EXE, "run", experiment.c_str(), "--out", out.c_str(),
+              "--quiet", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    return child;
+}
+
 /// Every file under `folder` with its bytes.
 /// `grainlab run` of `experiment` into `out`, stopped by SIGINT after `steps` steps (the
 /// GRAINLAB_TEST_STOP_AFTER_STEPS hook): true when it ended as an interrupted run does (130).
@@ -140,15 +154,8 @@ TEST(RunFolder, ASecondRunIntoALiveFolderIsRefusedAndTouchesNothing) {
     const fs::path base = freshFolder("live");
     const fs::path experiment = writeTinyExperiment(base, 0.1); // long enough to stay alive
     const fs::path out = base / "out";
-    const pid_t child = fork();
+    const pid_t child = startRun(experiment, out);
     ASSERT_GE(child, 0);
-    if (child == 0) {
-        std::freopen("/dev/null", "w", stderr);
-        std::freopen("/dev/null", "w", stdout);
-        execl(GRAINLAB_EXE, GRAINLAB_EXE, "run", experiment.c_str(), "--out", out.c_str(),
-              "--quiet", static_cast<char*>(nullptr));
-        _exit(127);
-    }
     // Wait until the first run is shearing (its test series exists).
     const fs::path csv = out / "p050kPa" / "series.csv";
     for (int k = 0; k < 1200 && !fs::exists(csv); ++k) {
@@ -190,15 +197,8 @@ TEST(RunFolder, AStopAsANewRunStartsLeavesNoFolderOrOneThatResumes) {
     for (const int delayMs : {0, 2, 5, 10, 20, 40, 80, 160}) {
         SCOPED_TRACE(fmt::format("SIGINT {} ms after the start", delayMs));
         const fs::path out = base / fmt::format("out{}", delayMs);
-        const pid_t child = fork();
+        const pid_t child = startRun(experiment, out);
         ASSERT_GE(child, 0);
-        if (child == 0) {
-            std::freopen("/dev/null", "w", stderr);
-            std::freopen("/dev/null", "w", stdout);
-            execl(GRAINLAB_EXE, GRAINLAB_EXE, "run", experiment.c_str(), "--out", out.c_str(),
-                  "--quiet", static_cast<char*>(nullptr));
-            _exit(127);
-        }
         std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));
         kill(child, SIGINT);
         int status = 0;
