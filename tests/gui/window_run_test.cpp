@@ -51,6 +51,40 @@ RunState state(MainWindow& w) {
     return w.controller().status().state;
 }
 
+/// The index of the chart named `name`, or -1.
+int chartNamed(const ChartsPanel& charts, const QString& name) {
+    for (int k = 0; k < charts.chartCount(); ++k) {
+        if (charts.definition(k).name == name) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+/// Pixels of chart `chart`'s plot area (not its legend, whose swatch has the colours too) within
+/// `tolerance` (sum over the channels) of `colour`, drawn as shown now.
+int plotPixelsOf(ChartsPanel& charts, int chart, QColor colour, int tolerance) {
+    const QImage image = charts.chartView(chart)->grab().toImage();
+    const QRect plot = charts.chartView(chart)
+                           ->mapFromScene(charts.chartView(chart)->chart()->plotArea())
+                           .boundingRect()
+                           .intersected(image.rect());
+    if (plot.isEmpty()) {
+        ADD_FAILURE() << "chart " << chart << " has no plot area on screen";
+        return 0;
+    }
+    int n = 0;
+    for (int y = plot.top(); y <= plot.bottom(); ++y) {
+        for (int x = plot.left(); x <= plot.right(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            n += std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
+                     std::abs(c.blue() - colour.blue()) <
+                 tolerance;
+        }
+    }
+    return n;
+}
+
 TEST(WindowRun, IsRecordedInANewRunFolderWithTheEditedExperiment) {
     // Only the runs folder's variable and the window's controls: this test builds on the old
     // window too, where it finds no run folder.
@@ -255,33 +289,12 @@ TEST(WindowRun, AConstantVolumeTestChosenInTheParametersRunsAndDrawsItsStressPat
 
     // The stress-path chart: its points, and its curve drawn in the test's colour (pixels).
     ChartsPanel* charts = w.chartsPanel();
-    int chart = -1;
-    for (int k = 0; k < charts->chartCount(); ++k) {
-        if (charts->definition(k).name == QStringLiteral("q_vs_p")) {
-            chart = k;
-        }
-    }
+    const int chart = chartNamed(*charts, QStringLiteral("q_vs_p"));
     ASSERT_GE(chart, 0);
     EXPECT_EQ(charts->curvePoints(chart, test, "q").size(), rows);
     charts->showPage(QStringLiteral("Stress paths"));
     QTest::qWait(100);
-    const QImage image = charts->chartView(chart)->grab().toImage();
-    const QColor colour = charts->testColour(test);
-    // Inside the plot area only (the legend's swatch has the colour too).
-    const QRect plot = charts->chartView(chart)
-                           ->mapFromScene(charts->chartView(chart)->chart()->plotArea())
-                           .boundingRect()
-                           .intersected(image.rect());
-    ASSERT_FALSE(plot.isEmpty());
-    int coloured = 0;
-    for (int y = plot.top(); y <= plot.bottom(); ++y) {
-        for (int x = plot.left(); x <= plot.right(); ++x) {
-            const QColor c = image.pixelColor(x, y);
-            coloured += std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
-                            std::abs(c.blue() - colour.blue()) <
-                        30;
-        }
-    }
+    const int coloured = plotPixelsOf(*charts, chart, charts->testColour(test), 30);
     std::printf("stress path chart: %d pixels of the test colour\n", coloured);
     EXPECT_GT(coloured, 50) << "the stress path is not drawn";
 }
@@ -291,17 +304,12 @@ TEST(WindowRun, AConstantVolumeTestChosenInTheParametersRunsAndDrawsItsStressPat
 // darker colour), and the chart of p'/p0 per cycle gets a point for each cycle ended.
 TEST(WindowRun, ACyclicTestRunsAndDrawsItsLoopsLiveCycleAndPressurePerCycle) {
     const QString runs = freshFolder(QStringLiteral("cyclic"));
-    const std::string path = GRAINLAB_SOURCE_DIR "/resources/experiments/quick.json";
-    auto j = nlohmann::ordered_json::parse(readExperimentFile(path).sourceText);
-    j["threads"] = 1;
-    j["grains"]["count"] = 120;
-    j["compaction"]["pressures"] = {15e3};
-    j["shear"]["pressures"] = {15e3};
-    j["test"] = {{"kind", "cyclic"}, {"drainage", "constant_volume"}, {"amplitude", 1e-3},
-                 {"cycles", 3}};
     MainWindow w;
     w.setRunsFolder(runs);
-    w.setExperiment(parseExperimentText(j.dump(2), path));
+    w.setExperiment(smallExperiment(0.005, {{"kind", "cyclic"},
+                                            {"drainage", "constant_volume"},
+                                            {"amplitude", 1e-3},
+                                            {"cycles", 3}}));
     w.resize(1400, 900);
     w.show();
     click(w, w.startAction());
@@ -310,15 +318,8 @@ TEST(WindowRun, ACyclicTestRunsAndDrawsItsLoopsLiveCycleAndPressurePerCycle) {
     w.refresh();
     const std::string test = "p015kPa-cyclic";
     ChartsPanel* charts = w.chartsPanel();
-    int loops = -1, perCycle = -1;
-    for (int k = 0; k < charts->chartCount(); ++k) {
-        if (charts->definition(k).name == QStringLiteral("q_vs_eps1")) {
-            loops = k;
-        }
-        if (charts->definition(k).name == QStringLiteral("p_per_cycle")) {
-            perCycle = k;
-        }
-    }
+    const int loops = chartNamed(*charts, QStringLiteral("q_vs_eps1"));
+    const int perCycle = chartNamed(*charts, QStringLiteral("p_per_cycle"));
     ASSERT_GE(loops, 0);
     ASSERT_GE(perCycle, 0);
     const auto points = charts->curvePoints(loops, test, "q");
@@ -337,21 +338,8 @@ TEST(WindowRun, ACyclicTestRunsAndDrawsItsLoopsLiveCycleAndPressurePerCycle) {
 
     charts->showPage(QStringLiteral("Stress paths"));
     QTest::qWait(100);
-    const QImage image = charts->chartView(loops)->grab().toImage();
-    const QColor bold = charts->testColour(test).darker(130);
-    const QRect plot = charts->chartView(loops)
-                           ->mapFromScene(charts->chartView(loops)->chart()->plotArea())
-                           .boundingRect()
-                           .intersected(image.rect());
-    int boldPixels = 0;
-    for (int y = plot.top(); y <= plot.bottom(); ++y) {
-        for (int x = plot.left(); x <= plot.right(); ++x) {
-            const QColor c = image.pixelColor(x, y);
-            boldPixels += std::abs(c.red() - bold.red()) + std::abs(c.green() - bold.green()) +
-                              std::abs(c.blue() - bold.blue()) <
-                          20;
-        }
-    }
+    const int boldPixels =
+        plotPixelsOf(*charts, loops, charts->testColour(test).darker(130), 20);
     EXPECT_GT(boldPixels, 50) << "the live cycle is not drawn";
 }
 

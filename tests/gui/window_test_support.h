@@ -17,8 +17,10 @@
 
 namespace grainlab::ui::window_tests {
 
-/// The quick run's experiment made small, read back from its text.
-inline ExperimentConfig smallExperiment(double shearTarget = 0.005) {
+/// The quick run's experiment made small, read back from its text; `test`, when given, is its
+/// `test` key (a loading path).
+inline ExperimentConfig smallExperiment(double shearTarget = 0.005,
+                                        const nlohmann::ordered_json& test = nullptr) {
     const std::string path = GRAINLAB_SOURCE_DIR "/resources/experiments/quick.json";
     auto j = nlohmann::ordered_json::parse(readExperimentFile(path).sourceText);
     j["threads"] = 1;
@@ -26,6 +28,9 @@ inline ExperimentConfig smallExperiment(double shearTarget = 0.005) {
     j["compaction"]["pressures"] = {15e3};
     j["shear"]["pressures"] = {15e3};
     j["shear"]["target_axial_strain"] = shearTarget;
+    if (!test.is_null()) {
+        j["test"] = test;
+    }
     return parseExperimentText(j.dump(2), path);
 }
 
