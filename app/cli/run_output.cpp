@@ -4,8 +4,8 @@
 #include <sys/file.h>
 #include <unistd.h>
 
-#include <csignal>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -84,7 +84,8 @@ RunFolderLock::RunFolderLock(const std::string& folder, bool create) {
                    file, stale, processExists(stale) ? "no longer holds it" : "no longer exists");
     }
     const std::string pid = fmt::format("{}\n", long(::getpid()));
-    if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) != ssize_t(pid.size())) {
+    if (::ftruncate(fd_, 0) != 0 ||
+        ::pwrite(fd_, pid.data(), pid.size(), 0) != ssize_t(pid.size())) {
         const int cause = errno;
         ::close(fd_);
         fd_ = -1;
@@ -209,6 +210,10 @@ ResumePoint RunOutputFolder::readResumePoint(const std::string& folder) {
     const std::string peak = ExperimentRunner::runningPeakCheckpoint(r.runnerState);
     if (!peak.empty()) {
         r.runningPeak = readState(path, runningPeakGroup(peak));
+    }
+    const std::string probeStart = ExperimentRunner::probeStartCheckpoint(r.runnerState);
+    if (!probeStart.empty()) {
+        r.probeStart = readState(path, probeStartGroup(probeStart));
     }
     for (double pressure : listSamples(path)) {
         r.samples[pressure] = readState(path, sampleGroup(pressure));

@@ -19,7 +19,8 @@ bool sameTests(const ExperimentConfig& a, const ExperimentConfig& b) {
         return false;
     }
     for (std::size_t k = 0; k < a.tests.size(); ++k) {
-        if (a.tests[k].kind != b.tests[k].kind || a.tests[k].slope != b.tests[k].slope) {
+        if (a.tests[k].kind != b.tests[k].kind || a.tests[k].slope != b.tests[k].slope ||
+            a.tests[k].extension != b.tests[k].extension) {
             return false;
         }
     }
@@ -56,12 +57,15 @@ std::string editedExperimentText(const ExperimentConfig& base, const ExperimentC
     if (!sameTests(base, edited)) {
         // The panel edits one test (a list of several is kept as the file has it).
         const LoadingPath& t = edited.tests.front();
-        if (t.kind == LoadingPath::Kind::Drained) {
+        if (t.kind == LoadingPath::Kind::Drained && !t.extension) {
             j.erase("test"); // the drained test is a file without one, the same bits
         } else {
             OrderedJson test{{"kind", loadingKindName(t.kind)}};
             if (t.kind == LoadingPath::Kind::StressPath) {
                 test["slope"] = t.slope;
+            }
+            if (t.extension) {
+                test["direction"] = "extension";
             }
             j["test"] = test;
         }

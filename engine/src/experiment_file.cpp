@@ -48,9 +48,10 @@ void checkStrainRate(const JsonSection& s, double rate, double timeStep) {
 
 /// The lateral servo's rate cap must exceed the axial strain rate by this factor: a sample
 /// sheared at eps1_rate widens at eps1_rate (1 + DI), DI the dilatancy index (on dense ovals
-/// about 0.7 on average over the shear, about 1 at its largest). Measured below it: 8450 ovals sheared at 1.6 /s with the cap at
-/// 1 /s were squeezed until the overlap guard stopped them; 2000 ovals at 4.7 /s with the cap at
-/// 5 /s could not dilate (eps_v rose where the slow reference's fell).
+/// about 0.7 on average over the shear, about 1 at its largest). Measured below it: 8450 ovals
+/// sheared at 1.6 /s with the cap at 1 /s were squeezed until the overlap guard stopped them; 2000
+/// ovals at 4.7 /s with the cap at 5 /s could not dilate (eps_v rose where the slow reference's
+/// fell).
 constexpr double kLateralServoMargin = 2.0;
 
 /// Refuses a shear whose lateral servo cannot follow the axial loading.
@@ -65,9 +66,9 @@ void checkLateralServoFollows(const JsonSection& s, const ShearSpec& shear, doub
         "slower lateral servo holds it from dilating or squeezes the grains until they overlap",
         kLateralServoMargin * axialRate, kLateralServoMargin, axialRate);
     if (!s.has("max_strain_rate")) {
-        s.fail("max_strain_rate", fmt::format("{} (default {:g}) must be {}; set it",
-                                              s.path("max_strain_rate"), shear.maxStrainRate,
-                                              allowed));
+        s.fail("max_strain_rate",
+               fmt::format("{} (default {:g}) must be {}; set it", s.path("max_strain_rate"),
+                           shear.maxStrainRate, allowed));
     }
     s.refuse("max_strain_rate", s.at("max_strain_rate"), allowed);
 }
@@ -426,12 +427,26 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
         const std::string at =
             top.has("test") && top.at("test").is_array() ? fmt::format("test[{}].", k) : "test.";
         if (t.kind == LoadingPath::Kind::Probes && t.start != LoadingPath::Start::End) {
-            throw ExperimentFileError(
-                sourceName, at + "start",
-                fmt::format("{}start: probes from a strain or the peak of a test are not "
-                            "available in this version (available: \"end\", where the test "
-                            "before them in the list ended)",
-                            at));
+            const bool afterMonotonic = k > 0 &&
+                                        config.tests[k - 1].kind != LoadingPath::Kind::Probes &&
+                                        config.tests[k - 1].kind != LoadingPath::Kind::Cyclic;
+            if (!afterMonotonic) {
+                throw ExperimentFileError(
+                    sourceName, at + "start",
+                    fmt::format("{}start = \"{}\": probes from a strain or the peak of a test must "
+                                "follow that test in the list, and it must be drained, "
+                                "constant_volume, constant_p or stress_path (\"end\" starts "
+                                "anywhere)",
+                                at, t.start == LoadingPath::Start::Peak ? "peak" : "strain"));
+            }
+            if (t.start == LoadingPath::Start::Strain &&
+                !(t.startStrain <= config.shear.targetAxialStrain)) {
+                throw ExperimentFileError(
+                    sourceName, at + "start_strain",
+                    fmt::format("{}start_strain = {:g}: must be in (0, {:g}], the test's "
+                                "shear.target_axial_strain",
+                                at, t.startStrain, config.shear.targetAxialStrain));
+            }
         }
         if (t.kind == LoadingPath::Kind::Probes && t.plane == LoadingPath::Plane::Stress) {
             throw ExperimentFileError(sourceName, at + "plane",

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "progress_estimate.h"
@@ -120,6 +121,16 @@ ExperimentRunner::ExperimentRunner(ExperimentConfig config, ResumePoint resume, 
     impl_->position = ctx.done ? impl_->plan.size() - 1 : planPosition(impl_->plan, kind, s.index);
     ctx.stage = makeStage(impl_->plan[impl_->position]);
     ctx.restore(s);
+    if (s.probeStartState) {
+        if (!resume.probeStart || resume.probeStart->step != s.probeStartState->step) {
+            throw std::runtime_error(fmt::format(
+                "resume: the start state of the probes (step {}) is kept in checkpoint {}, which "
+                "the resume point does not hold",
+                s.probeStartState->step, s.probeStartState->keptIn));
+        }
+        ctx.probeStart = std::move(resume.probeStart);
+        ctx.probeStart->parameters.threads = threadsFor(ctx.config);
+    }
     ctx.stage->restore(s, ctx, resume.state, std::move(resume.runningPeak));
     ctx.sim = std::make_unique<Simulation>(std::move(resume.state));
     if (output) {
@@ -203,6 +214,12 @@ bool ExperimentRunner::finishedAt(const std::string& runnerState) {
 std::string ExperimentRunner::runningPeakCheckpoint(const std::string& runnerState) {
     const nlohmann::json j = nlohmann::json::parse(runnerState);
     return j.contains("peak") ? j.at("peak").at("kept_in").get<std::string>() : std::string();
+}
+
+std::string ExperimentRunner::probeStartCheckpoint(const std::string& runnerState) {
+    const nlohmann::json j = nlohmann::json::parse(runnerState);
+    return j.contains("probe_start") ? j.at("probe_start").at("kept_in").get<std::string>()
+                                     : std::string();
 }
 
 std::map<std::string, std::size_t>

@@ -21,6 +21,7 @@ const std::vector<std::string> kKindNames = {"drained",     "constant_volume", "
 const std::map<std::string, std::vector<Kind>>& keyKinds() {
     static const std::map<std::string, std::vector<Kind>> keys = {
         {"slope", {Kind::StressPath}},
+        {"direction", {Kind::Drained, Kind::ConstantVolume, Kind::ConstantP, Kind::StressPath}},
         {"control", {Kind::Cyclic}},
         {"drainage", {Kind::Cyclic}},
         {"amplitude", {Kind::Cyclic}},
@@ -73,9 +74,8 @@ std::vector<LoadingPath> readLoadingPaths(const JsonSection& experiment) {
         if (std::find(names.begin(), names.end(), name) != names.end()) {
             t.fail("kind", fmt::format("{}: a second test of the same kind{} (each test of a "
                                        "sample needs its own kind or slope)",
-                                       t.path(), paths.back().kind == Kind::StressPath
-                                                     ? " and slope"
-                                                     : ""));
+                                       t.path(),
+                                       paths.back().kind == Kind::StressPath ? " and slope" : ""));
         }
         names.push_back(name);
     }
@@ -85,7 +85,10 @@ std::vector<LoadingPath> readLoadingPaths(const JsonSection& experiment) {
     return paths;
 }
 
-std::string testSuffix(const LoadingPath& path) {
+namespace {
+
+/// The kind's part of testSuffix().
+std::string kindSuffix(const LoadingPath& path) {
     switch (path.kind) {
     case Kind::Drained:
         return "";
@@ -99,6 +102,12 @@ std::string testSuffix(const LoadingPath& path) {
     }
 }
 
+} // namespace
+
+std::string testSuffix(const LoadingPath& path) {
+    return kindSuffix(path) + (path.extension ? "-extension" : "");
+}
+
 namespace {
 
 LoadingPath readTest(const JsonSection& t) {
@@ -108,10 +117,16 @@ LoadingPath readTest(const JsonSection& t) {
         Kind(std::find(kKindNames.begin(), kKindNames.end(), kindName) - kKindNames.begin());
     for (const auto& [key, kinds] : keyKinds()) {
         if (t.has(key) && std::find(kinds.begin(), kinds.end(), path.kind) == kinds.end()) {
-            t.fail(key, fmt::format("{} applies to kind \"{}\" only, not \"{}\"", t.path(key),
-                                    loadingKindName(kinds.front()), kindName));
+            std::string allowed;
+            for (Kind k : kinds) {
+                allowed += fmt::format("{}\"{}\"", allowed.empty() ? "" : ", ", loadingKindName(k));
+            }
+            t.fail(key, fmt::format("{} applies to kind{} {} only, not \"{}\"", t.path(key),
+                                    kinds.size() > 1 ? "s" : "", allowed, kindName));
         }
     }
+    path.extension =
+        t.choice("direction", {"compression", "extension"}, "compression") == "extension";
     switch (path.kind) {
     case Kind::StressPath:
         // |a| <= 10 spans the paths between and well beyond drained (0) and constant p (-1);

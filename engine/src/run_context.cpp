@@ -115,8 +115,7 @@ void RunContext::recordNow() {
 }
 
 std::string RunContext::stageName() const {
-    return done ? std::string("done")
-                : stageTitle(stageKindName(stage->kind()), stage->pressure());
+    return done ? std::string("done") : stageTitle(stageKindName(stage->kind()), stage->pressure());
 }
 
 StageIdentity RunContext::identity() const {
@@ -161,6 +160,10 @@ void RunContext::checkpoint(const std::string& label, const StageIdentity& id) {
     data.network = &network;
     data.voidCells = &cells;
     stage->addToCheckpoint(data); // before the runner state, which may name this checkpoint
+    if (probeStart && probeStartKeptIn.empty()) {
+        data.probeStart = &*probeStart;
+        probeStartKeptIn = name;
+    }
     data.runnerState = runnerStateText(runnerState());
     output->checkpoint(data);
 }
@@ -189,6 +192,10 @@ RunnerState RunContext::runnerState() const {
         s.seriesRows[t.test] = t.rows.size();
     }
     s.warnings = warnings;
+    s.probeStartState.reset();
+    if (probeStart) {
+        s.probeStartState = ProbeStartRecord{probeStart->step, probeStartKeptIn};
+    }
     stage->save(s, *this);
     return s;
 }
@@ -210,6 +217,7 @@ void RunContext::restore(const RunnerState& s) {
     thetaAtRunStart = std::make_shared<const std::vector<double>>(s.thetaAtRunStart);
     currentSeries = s.currentSeries.empty() ? -1 : seriesIndex(s.currentSeries);
     warnings = s.warnings;
+    probeStartKeptIn = s.probeStartState ? s.probeStartState->keptIn : std::string();
 }
 
 } // namespace grainlab

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,12 @@ struct RunContext {
     std::vector<RunWarning> warnings; ///< every warning given so far, in order
     /// The runner-state fields of stages no longer under way, with their final values.
     RunnerState carried;
+    /// The state the probes after the current test start from (stage_probes.h: their start
+    /// strain, or the test's peak of q/p), from when the test passes it until the probes start.
+    /// Written beside the first checkpoint after it (the run file's group probe_start of the
+    /// checkpoint probeStartKeptIn), so that a run resumed before the probes start has it.
+    std::optional<SimulationState> probeStart;
+    std::string probeStartKeptIn;
 
     std::string currentTest() const;
     void warn(const std::string& kind, const std::string& text);

@@ -649,6 +649,9 @@ void RunFile::checkpoint(const CheckpointData& data) {
     if (data.runningPeak) {
         bytes += stateBytes(*data.runningPeak);
     }
+    if (data.probeStart) {
+        bytes += stateBytes(*data.probeStart);
+    }
     impl_->write(bytes, "checkpoint " + data.name, [&] { checkpointNow(data); });
 }
 
@@ -668,6 +671,10 @@ void RunFile::checkpointNow(const CheckpointData& data) {
             if (data.runningPeak) {
                 H5::Group peak = g.createGroup("running_peak");
                 writeState(peak, *data.runningPeak);
+            }
+            if (data.probeStart) {
+                H5::Group start = g.createGroup("probe_start");
+                writeState(start, *data.probeStart);
             }
         };
         impl_->writeStateGroup("checkpoints", data.name, *data.state, runnerState, {},
@@ -767,6 +774,10 @@ std::string sampleGroup(double pressure) {
 
 std::string runningPeakGroup(const std::string& name) {
     return checkpointGroup(name) + "/running_peak";
+}
+
+std::string probeStartGroup(const std::string& name) {
+    return checkpointGroup(name) + "/probe_start";
 }
 
 SimulationState readState(const std::string& path, const std::string& groupPath) {

@@ -49,6 +49,10 @@ std::string runnerStateText(const RunnerState& s) {
         j["cyclic_direction"] = s.cyclicDirection;
         j["cyclic_reversals"] = s.cyclicReversals;
     }
+    if (s.probeStartState) { // only between a probe start state and the probes' start
+        j["probe_start"] = {{"step", s.probeStartState->step},
+                            {"kept_in", s.probeStartState->keptIn}};
+    }
     if (s.peak) {
         nlohmann::json p;
         p["q_over_p"] = s.peak->stressRatio;
@@ -101,6 +105,10 @@ RunnerState parseRunnerState(const std::string& text) {
     if (j.contains("probe")) {
         s.probe = j.at("probe");
         s.probeStartStep = j.at("probe_start_step");
+    }
+    if (j.contains("probe_start")) {
+        const nlohmann::json& p = j.at("probe_start");
+        s.probeStartState = ProbeStartRecord{p.at("step"), p.at("kept_in")};
     }
     if (j.contains("peak")) {
         const nlohmann::json& p = j.at("peak");

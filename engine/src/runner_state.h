@@ -28,6 +28,14 @@ struct RunningPeakRecord {
     std::string keptIn;
 };
 
+/// Where the start state of probes that start at a strain or at the peak of the test before them
+/// is kept, once that test has passed it (RunContext::probeStart).
+struct ProbeStartRecord {
+    std::int64_t step = 0;
+    /// The checkpoint whose group probe_start holds the state.
+    std::string keptIn;
+};
+
 struct RunnerState {
     // The runner's position: the stage kind (StageKind as an integer) and its pressure index
     // (into compaction.pressures for a compaction, shear.pressures for a test's stages).
@@ -56,6 +64,8 @@ struct RunnerState {
     // start state is kept beside a checkpoint like a running peak (peak.kept_in).
     int probe = 0;
     std::int64_t probeStartStep = 0;
+    /// The start state of the probes after the test under way, once it has passed it.
+    std::optional<ProbeStartRecord> probeStartState;
     // A stress-controlled cyclic test (stage_cyclic.h): the axial direction and the reversals.
     int cyclicDirection = 0;
     std::int64_t cyclicReversals = 0;

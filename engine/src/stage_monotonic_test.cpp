@@ -32,15 +32,40 @@ AxisControl MonotonicTestStage::lateralControl(const RunContext& ctx) const {
     }
 }
 
+double MonotonicTestStage::direction(const RunContext& ctx) const {
+    return ctx.config.tests[std::size_t(testIndex())].extension ? -1.0 : 1.0;
+}
+
+const LoadingPath* MonotonicTestStage::probesAfter(const RunContext& ctx) const {
+    const std::size_t next = std::size_t(testIndex()) + 1;
+    if (next >= ctx.config.tests.size()) {
+        return nullptr;
+    }
+    const LoadingPath& path = ctx.config.tests[next];
+    return path.kind == LoadingPath::Kind::Probes && path.start != LoadingPath::Start::End
+               ? &path
+               : nullptr;
+}
+
+std::int64_t MonotonicTestStage::handOverStep(const RunContext& ctx) const {
+    const LoadingPath* probes = probesAfter(ctx);
+    return probes && probes->start == LoadingPath::Start::Strain
+               ? ctx.stageStartStep + ctx.strideOf(probes->startStrain)
+               : -1;
+}
+
 void MonotonicTestStage::start(RunContext& ctx) {
     const ExperimentConfig& config = ctx.config;
+    ctx.probeStart.reset();
+    ctx.probeStartKeptIn.clear();
     ctx.stageStartStep = ctx.sim->stepCount();
     ctx.setStrainReference();
     forgetInitialVoids();
     peak_ = RunningPeak{};
     const double dt = config.parameters.timeStep;
-    ctx.sim->setAxisControl(
-        0, {AxisMode::Strain, config.shear.axialStrainPerStep / dt, 0.0, ctx.length1At0});
+    ctx.sim->setAxisControl(0, {AxisMode::Strain,
+                                direction(ctx) * config.shear.axialStrainPerStep / dt, 0.0,
+                                ctx.length1At0});
     ctx.sim->setAxisControl(1, lateralControl(ctx));
     // Events fall on whole steps counted from the start of shear (each step adds the same
     // engineering strain), so they do not depend on how advance() is chunked.
@@ -61,13 +86,20 @@ std::int64_t MonotonicTestStage::endStep(const RunContext& ctx) const {
 
 std::int64_t MonotonicTestStage::stepsToNextEvent(const RunContext& ctx) const {
     const std::int64_t now = ctx.sim->stepCount();
-    return std::max<std::int64_t>(
-        1, std::min({ctx.nextRecordStep, ctx.nextSnapshotStep, endStep(ctx)}) - now);
+    std::int64_t next = std::min({ctx.nextRecordStep, ctx.nextSnapshotStep, endStep(ctx)});
+    if (const std::int64_t probes = handOverStep(ctx); probes > now) {
+        next = std::min(next, probes);
+    }
+    return std::max<std::int64_t>(1, next - now);
 }
 
 bool MonotonicTestStage::handleEvents(RunContext& ctx) {
     const std::int64_t now = ctx.sim->stepCount();
     const bool end = now >= endStep(ctx);
+    if (now == handOverStep(ctx)) {
+        ctx.probeStart = ctx.sim->state(); // kept beside the next checkpoint
+        ctx.probeStartKeptIn.clear();
+    }
     if (now >= ctx.nextRecordStep || end) {
         ctx.recordNow();
         ctx.nextRecordStep = now + ctx.strideOf(ctx.config.record.strainInterval);
@@ -81,6 +113,11 @@ bool MonotonicTestStage::handleEvents(RunContext& ctx) {
 }
 
 void MonotonicTestStage::finish(RunContext& ctx) {
+    if (const LoadingPath* probes = probesAfter(ctx);
+        probes && probes->start == LoadingPath::Start::Peak && peak_.active) {
+        ctx.probeStart = peak_.state; // kept beside the stage's end checkpoint
+        ctx.probeStartKeptIn.clear();
+    }
     peakCheckpoint(ctx);
     peak_ = RunningPeak{};
 }
@@ -88,12 +125,15 @@ void MonotonicTestStage::finish(RunContext& ctx) {
 /// At a record, before a checkpoint of the same step: a new maximum of q/p keeps a copy of the
 /// state. The first of equal maxima is the peak.
 void MonotonicTestStage::trackPeak(RunContext& ctx) {
-    if (!ctx.output) {
-        return; // only the peak checkpoint needs it
+    const LoadingPath* probes = probesAfter(ctx);
+    if (!ctx.output && !(probes && probes->start == LoadingPath::Start::Peak)) {
+        return; // only the peak checkpoint and probes from the peak need it
     }
     const SeriesTable& t = ctx.series[ctx.currentSeries];
     const double ratio = t.rows.back()[t.column("q_over_p")];
-    if (peak_.active && !(ratio > peak_.at.stressRatio)) {
+    // In extension q < 0: the peak is the largest -q/p.
+    const double sign = direction(ctx);
+    if (peak_.active && !(sign * ratio > sign * peak_.at.stressRatio)) {
         return;
     }
     peak_.active = true;

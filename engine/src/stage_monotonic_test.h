@@ -1,7 +1,8 @@
 #pragma once
 // A test that strains axis 1 monotonically, after the sample's re-equilibration: axis 1
 // shortened at a constant engineering strain per step (shear.axial_strain_per_step) to
-// shear.target_axial_strain, axis 2 following the test's path (its stage kind):
+// shear.target_axial_strain, or lengthened as much in extension (test.direction), axis 2
+// following the test's path (its stage kind):
 //  - Shear, the drained biaxial test: sigma22 servoed to the confining pressure;
 //  - ConstantVolume: the cell's area held at its value at the start (exactly, AxisMode
 //    ConstantArea), the undrained analogue;
@@ -12,9 +13,14 @@
 // record.strain_interval of eps1, a checkpoint every record.snapshot_strain_interval.
 //
 // It records N_vi at its start (the reference of the void-count columns) and tracks the running
-// maximum of q/p over its records; at its end it writes that state as the test's peak
-// checkpoint. Saved: voids_at_start and peak (with the state at the peak kept beside the first
-// checkpoint after it, the run file's group running_peak).
+// maximum of q/p over its records (of -q/p in extension); at its end it writes that state as the
+// test's peak checkpoint. Saved: voids_at_start and peak (with the state at the peak kept beside
+// the first checkpoint after it, the run file's group running_peak).
+//
+// When the next test in the experiment's list is a set of probes that starts at a strain of this
+// test or at its peak (stage_probes.h), it hands their start state over in RunContext::probeStart:
+// the state at the first step whose eps1 reaches their start_strain, or, at its end, the state at
+// its peak of q/p.
 //
 // The model for a new test kind: its axis controls in start() (or changed in handleEvents()),
 // its stop criterion in handleEvents(), its records and tracked measures, its save()/restore().
@@ -53,6 +59,12 @@ private:
     AxisControl lateralControl(const RunContext& ctx) const;
     std::int64_t endStep(const RunContext& ctx) const;
     void trackPeak(RunContext& ctx);
+    /// +1 in compression (axis 1 shortened), -1 in extension.
+    double direction(const RunContext& ctx) const;
+    /// The probes after this test, when they start at a strain of it or at its peak; else null.
+    const LoadingPath* probesAfter(const RunContext& ctx) const;
+    /// The step at which the probes after it start (start "strain"); -1 for none.
+    std::int64_t handOverStep(const RunContext& ctx) const;
     void peakCheckpoint(RunContext& ctx);
 
     RunningPeak peak_;

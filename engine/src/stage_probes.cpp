@@ -16,6 +16,21 @@ std::int64_t ProbesStage::probeSteps(const ExperimentConfig& config, const Loadi
 }
 
 void ProbesStage::start(RunContext& ctx) {
+    const LoadingPath& path = ctx.config.tests[std::size_t(testIndex())];
+    if (path.start != LoadingPath::Start::End) {
+        // At a strain or the peak of the test before: the state it handed over.
+        if (!ctx.probeStart) {
+            throw std::runtime_error(
+                fmt::format("{}: the test before the probes handed over no start state", test()));
+        }
+        SimulationState from = std::move(*ctx.probeStart);
+        ctx.probeStart.reset();
+        ctx.probeStartKeptIn.clear();
+        SimulationState state = from;
+        state.step = ctx.sim->stepCount(); // the step counter goes on
+        state.parameters.threads = threadsFor(ctx.config);
+        ctx.sim = std::make_unique<Simulation>(std::move(state));
+    }
     // A series of its own, also when it follows another test with no re-equilibration between.
     ctx.currentSeries = ctx.seriesIndex(test());
     ctx.thetaAtTestStart =

@@ -4,8 +4,11 @@
 // each started from the same state, bit for bit; the stress response of each gives the
 // incremental response envelope (responseEnvelope()).
 //
-// The start state is where the sample is when the stage starts: the end of the test before it in
-// the experiment's test list, or, first in the list, the re-equilibrated sample. A probe moves
+// The start state (test.start) is, for "end", where the sample is when the stage starts: the end
+// of the test before it in the experiment's test list, or, first in the list, the
+// re-equilibrated sample; for "strain" and "peak", the state the monotonic test before it handed
+// over in RunContext::probeStart (stage_monotonic_test.h): at the first step whose eps1 reaches
+// test.start_strain, or at its peak of q/p. A probe moves
 // both axes under strain control at the drained test's strain per step
 // (shear.axial_strain_per_step) in its direction, for increment / strain-per-step steps (at least
 // one); then the simulation is made again from the start state (its step counter going on, which

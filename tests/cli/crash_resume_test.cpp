@@ -276,6 +276,104 @@ TEST(CrashResume, EveryInterruptionResumesToTheSameBits) {
     }
 }
 
+// Every test kind through the run file: constant volume, a drained test in extension followed by
+// probes from a strain of it (their start state kept in the run file's group probe_start until
+// they start), and a cyclic test at constant volume, each killed or stopped in its middle and
+// resumed with --resume, gives the same bits as the uninterrupted run.
+TEST(CrashResume, EveryTestKindResumesFromAStopInItsMiddleToTheSameBits) {
+    const fs::path base =
+        fs::temp_directory_path() / fmt::format("grainlab-test-crash-kinds-{}", getpid());
+    fs::remove_all(base);
+    fs::create_directories(base);
+    nlohmann::json j = crashExperiment();
+    j["compaction"]["pressures"] = {25e3};
+    j["shear"]["pressures"] = {25e3};
+    j["test"] = nlohmann::json::parse(R"([
+        {"kind": "constant_volume"},
+        {"kind": "drained", "direction": "extension"},
+        {"kind": "probes", "start": "strain", "start_strain": 0.001, "count": 8,
+         "increment": 1e-5},
+        {"kind": "cyclic", "amplitude": 5e-4, "cycles": 2, "drainage": "constant_volume"}])");
+    const fs::path experiment = base / "experiment.json";
+    std::ofstream(experiment) << j.dump(2);
+
+    const fs::path whole = base / "whole";
+    const int wholeStatus = runGrainlab({"run", experiment.string(), "--out", whole.string()});
+    ASSERT_TRUE(WIFEXITED(wholeStatus) && WEXITSTATUS(wholeStatus) == 0);
+    const RunRecord reference = readRun(whole);
+    ASSERT_EQ(reference.series.size(), 5u); // compaction and four tests
+
+    // The simulation steps of each stage, and where a chain of stages from the sample (its
+    // re-equilibration, its test, and the probes that follow without one) ends.
+    const auto steps = [&](const std::string& test, const std::string& stage) {
+        const SeriesTable& t = reference.series.at(test);
+        std::pair<std::int64_t, std::int64_t> range{-1, -1};
+        for (std::size_t r = 0; r < t.rows.size(); ++r) {
+            if (t.stages[r] == stage) {
+                const auto s = static_cast<std::int64_t>(t.rows[r][std::size_t(t.column("step"))]);
+                range.first = range.first < 0 ? s : range.first;
+                range.second = s;
+            }
+        }
+        EXPECT_GE(range.first, 0) << test << ": no stage " << stage;
+        return range;
+    };
+    const std::int64_t sample = steps("compaction", "compaction 25 kPa").second;
+    const auto cv = steps("p025kPa-constant-volume", "constant_volume 25 kPa");
+    const auto ext = steps("p025kPa-extension", "shear 25 kPa");
+    const auto probes = steps("p025kPa-probes", "probes 25 kPa");
+    const auto cyclic = steps("p025kPa-cyclic", "cyclic 25 kPa");
+    // Steps of the process at simulation step s of each chain (each starts from the sample).
+    const std::int64_t chain2 = sample + (cv.second - sample);
+    const std::int64_t chain3 = chain2 + (probes.second - sample);
+    const auto at = [&](std::int64_t chainStart, std::int64_t s) {
+        return chainStart + s - sample;
+    };
+    const std::int64_t strainPoint = ext.first + 2000; // eps1 = -0.1 %
+    struct Case {
+        std::string what;
+        std::int64_t step;
+        const char* signal;
+    };
+    const std::vector<Case> cases = {
+        {"constant volume, mid", at(sample, (cv.first + cv.second) / 2 + 17), "KILL"},
+        {"extension, before the probes' start strain", at(chain2, strainPoint - 301), "INT"},
+        {"extension, after the probes' start strain", at(chain2, strainPoint + 1207), "KILL"},
+        {"extension, at its end", at(chain2, ext.second), "KILL"},
+        {"probes, mid", at(chain2, (probes.first + probes.second) / 2 + 5), "INT"},
+        {"cyclic, mid", at(chain3, (cyclic.first + cyclic.second) / 2 + 3), "KILL"},
+    };
+    std::string failed;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const Case& c = cases[k];
+        const fs::path out = base / fmt::format("case{:02d}", k);
+        const std::string label = fmt::format("{} ({} after {} steps)", c.what, c.signal, c.step);
+        const int first =
+            runGrainlab({"run", experiment.string(), "--out", out.string()}, c.step, c.signal);
+        if (std::string(c.signal) == "KILL") {
+            EXPECT_TRUE(WIFSIGNALED(first) && WTERMSIG(first) == SIGKILL) << label;
+        } else {
+            EXPECT_TRUE(WIFEXITED(first) && WEXITSTATUS(first) == 130) << label;
+        }
+        const int second = runGrainlab({"run", "--resume", out.string()});
+        if (!(WIFEXITED(second) && WEXITSTATUS(second) == 0)) {
+            ADD_FAILURE() << label << ": --resume failed (status " << second << ")";
+            failed += "\n  " + label + ": --resume failed";
+            continue;
+        }
+        const std::string diff = differences(reference, readRun(out));
+        if (!diff.empty()) {
+            ADD_FAILURE() << label << ": differs in" << diff;
+            failed += "\n  " + label + ":" + diff;
+        } else {
+            fs::remove_all(out);
+        }
+    }
+    if (failed.empty()) {
+        fs::remove_all(base);
+    }
+}
+
 } // namespace
 } // namespace grainlab
 

@@ -193,9 +193,22 @@ TEST(ExperimentFile, TheTestKeyHoldsOneTestOrAList) {
     expectRefused(j, "test[1].slope", {"missing required key test[1].slope", "[-10, 10]"});
     j["test"] = Json::parse(R"([{"kind": "drained"}, 3])");
     expectRefused(j, "test[1]", {"test[1] = 3: must be an object"});
+    // Probes from a strain or the peak need a monotonic test just before them, and a strain it
+    // reaches.
+    j["test"] = Json::parse(R"({"kind": "probes", "start": "peak"})");
+    expectRefused(j, "test.start", {"test.start = \"peak\"", "must follow that test", "\"end\""});
+    j["test"] = Json::parse(
+        R"([{"kind": "cyclic", "amplitude": 0.001}, {"kind": "probes", "start": "strain", "start_strain": 0.001}])");
+    expectRefused(j, "test[1].start", {"test[1].start = \"strain\"", "constant_volume"});
+    j["test"] = Json::parse(
+        R"([{"kind": "drained"}, {"kind": "probes", "start": "strain", "start_strain": 0.5}])");
+    expectRefused(j, "test[1].start_strain",
+                  {"test[1].start_strain = 0.5", "shear.target_axial_strain"});
+    j["test"] =
+        Json::parse(R"([{"kind": "constant_volume"}, {"kind": "probes", "start": "peak"}])");
+    EXPECT_EQ(parseExperimentText(j.dump(), "probes-from-peak.json").tests[1].start,
+              LoadingPath::Start::Peak);
     // Kinds the runner does not play yet are refused, not run as something else.
-    j["test"] = Json::parse(R"([{"kind": "drained"}, {"kind": "probes", "start": "peak"}])");
-    expectRefused(j, "test[1].start", {"not available", "\"end\""});
     j["test"] = Json::parse(R"([{"kind": "drained"}, {"kind": "probes", "plane": "stress"}])");
     expectRefused(j, "test[1].plane", {"\"stress\": not available", "\"strain\""});
     // A strain cycle shorter than one step of strain has no waveform.

@@ -18,12 +18,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "experiment_fixtures.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/loading_path.h"
 #include "grainlab/path_measures.h"
+#include "grainlab/shear_metrics.h"
 #include "grainlab/stage_kind.h"
-#include "experiment_fixtures.h"
 #include "runner_state.h"
 
 namespace grainlab {
@@ -67,6 +68,9 @@ public:
         if (data.runningPeak) {
             peaks[data.name] = *data.runningPeak;
         }
+        if (data.probeStart) {
+            probeStarts[data.name] = *data.probeStart;
+        }
         kept.push_back(std::move(k));
     }
     ResumePoint resumeFrom(const Kept& k) const {
@@ -79,6 +83,10 @@ public:
         if (!in.empty()) {
             r.runningPeak = peaks.at(in);
         }
+        const std::string start = ExperimentRunner::probeStartCheckpoint(k.runnerState);
+        if (!start.empty()) {
+            r.probeStart = probeStarts.at(start);
+        }
         return r;
     }
 
@@ -86,6 +94,7 @@ public:
     std::map<double, SimulationState> samples;
     std::vector<Kept> kept;
     std::map<std::string, SimulationState> peaks;
+    std::map<std::string, SimulationState> probeStarts;
 };
 
 using Where = std::tuple<std::string, std::string, std::int64_t>; // stage, test, step
@@ -243,10 +252,9 @@ TEST(ExperimentRunnerStages, TheStageIdentityTravelsAsData) {
     EXPECT_EQ(a->stagePressure, 25e3);
     EXPECT_EQ(a->thetaAtTestStart.get(), b->thetaAtTestStart.get());
     ASSERT_EQ(b->rotation.size(), b->thetaAtTestStart->size());
-    for (const StageKind k :
-         {StageKind::Compaction, StageKind::Equilibration, StageKind::Shear, StageKind::Done,
-          StageKind::ConstantVolume, StageKind::ConstantP, StageKind::StressPath,
-          StageKind::Cyclic, StageKind::Probes}) {
+    for (const StageKind k : {StageKind::Compaction, StageKind::Equilibration, StageKind::Shear,
+                              StageKind::Done, StageKind::ConstantVolume, StageKind::ConstantP,
+                              StageKind::StressPath, StageKind::Cyclic, StageKind::Probes}) {
         EXPECT_EQ(stageKindFromName(stageKindName(k)), k);
         EXPECT_EQ(isTestStage(k), k != StageKind::Compaction && k != StageKind::Equilibration &&
                                       k != StageKind::Done);
@@ -292,6 +300,22 @@ constexpr double kPathTolerance = 2e-3;
 // The elastic limit of probes (asymmetry and ellipse residual of the envelope, path_measures.h):
 // measured 2.1e-6 and 6.2e-7 on 120 frictionless ovals at increments of 1e-6; asserted 1e-4.
 constexpr double kElasticTolerance = 1e-4;
+
+/// The largest |sigma22 - (P + a (sigma11 - sigma11_0))| / P over the test's records beyond
+/// |eps1| = 0.05 % (the servo's start).
+double worstPathError(const SeriesTable& t, double a, double pressure) {
+    const auto rows = testRows(t);
+    const double origin11 = column(t, rows.front(), "sigma11");
+    double worst = 0;
+    for (std::size_t r : rows) {
+        if (std::fabs(column(t, r, "eps1")) < 5e-4) {
+            continue;
+        }
+        const double target = pressure + a * (column(t, r, "sigma11") - origin11);
+        worst = std::max(worst, std::fabs(column(t, r, "sigma22") - target) / pressure);
+    }
+    return worst;
+}
 
 TEST(ExperimentRunnerStages, EveryTestKindRunsOnTheSameSampleAndHoldsItsPath) {
     const ExperimentConfig config = withTests(nlohmann::json::parse(R"([
@@ -342,17 +366,9 @@ TEST(ExperimentRunnerStages, EveryTestKindRunsOnTheSameSampleAndHoldsItsPath) {
     for (const auto& [index, a] : {std::pair{3, -1.0}, std::pair{4, -0.5}}) {
         const SeriesTable& t = series[std::size_t(index)];
         const auto rows = testRows(t);
-        const std::size_t first = rows.front();
         const double pressure = 25e3;
-        const double origin11 = column(t, first, "sigma11");
-        double worst = 0;
-        for (std::size_t r : rows) {
-            if (column(t, r, "eps1") < 5e-4) {
-                continue;
-            }
-            const double target = pressure + a * (column(t, r, "sigma11") - origin11);
-            worst = std::max(worst, std::fabs(column(t, r, "sigma22") - target) / pressure);
-        }
+        const double origin11 = column(t, rows.front(), "sigma11");
+        const double worst = worstPathError(t, a, pressure);
         std::printf("%s: max |sigma22 - path| / P = %.3g\n", t.test.c_str(), worst);
         EXPECT_LT(worst, kPathTolerance) << t.test;
         // The path went somewhere: sigma11 grew by more than the tolerance.
@@ -362,6 +378,53 @@ TEST(ExperimentRunnerStages, EveryTestKindRunsOnTheSameSampleAndHoldsItsPath) {
             EXPECT_NEAR(column(t, rows.back(), "p"), 0.5 * (pressure + origin11),
                         kPathTolerance * pressure);
         }
+    }
+}
+
+TEST(ExperimentRunnerStages, EveryMonotonicKindRunsInExtensionAndHoldsItsPath) {
+    // Axis 1 lengthened by 0.2 %: each path holds as in compression, sigma11 falls.
+    const ExperimentConfig config = withTests(nlohmann::json::parse(R"([
+        {"kind": "drained", "direction": "extension"},
+        {"kind": "constant_volume", "direction": "extension"},
+        {"kind": "constant_p", "direction": "extension"},
+        {"kind": "stress_path", "slope": -0.5, "direction": "extension"}])"));
+    ExperimentRunner runner(config);
+    while (runner.advance(5000)) {
+    }
+    const std::vector<SeriesTable>& series = runner.series();
+    ASSERT_EQ(series.size(), 5u);
+    const std::vector<std::string> names = {
+        "p025kPa-extension", "p025kPa-constant-volume-extension", "p025kPa-constant-p-extension",
+        "p025kPa-path-0.5-extension"};
+    const double pressure = 25e3;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        const SeriesTable& t = series[k + 1];
+        EXPECT_EQ(t.test, names[k]);
+        const auto rows = testRows(t);
+        ASSERT_GE(rows.size(), 10u) << t.test;
+        EXPECT_NEAR(column(t, rows.back(), "eps1"), -0.002, 1e-9) << t.test;
+        // sigma11 fell (the sample unloads axially), q went negative.
+        EXPECT_LT(column(t, rows.back(), "sigma11") / column(t, rows.front(), "sigma11") - 1.0,
+                  -0.05)
+            << t.test;
+        EXPECT_LT(column(t, rows.back(), "q"), 0.0) << t.test;
+        // The metrics read the extension's peak: the most negative q/p.
+        double lowest = 0;
+        for (std::size_t r : rows) {
+            lowest = std::min(lowest, column(t, r, "q_over_p"));
+        }
+        EXPECT_EQ(shearMetrics(t, pressure).peakStressRatio.value_or(1.0), lowest) << t.test;
+    }
+    // Drained: sigma22 at the pressure; constant volume: the area to round-off; the paths.
+    EXPECT_LT(worstPathError(series[1], 0.0, pressure), kPathTolerance);
+    for (std::size_t r : testRows(series[2])) {
+        EXPECT_LE(std::fabs(column(series[2], r, "epsv")), 1e-12) << "record " << r;
+    }
+    for (const auto& [index, a] : {std::pair{3, -1.0}, std::pair{4, -0.5}}) {
+        const double worst = worstPathError(series[std::size_t(index)], a, pressure);
+        std::printf("%s: max |sigma22 - path| / P = %.3g\n",
+                    series[std::size_t(index)].test.c_str(), worst);
+        EXPECT_LT(worst, kPathTolerance) << series[std::size_t(index)].test;
     }
 }
 
@@ -397,8 +460,8 @@ TEST(ExperimentRunnerStages, EveryTestKindResumesFromTheMiddleOfItsTestBitForBit
 TEST(ExperimentRunnerStages, ACyclicTestFollowsItsWaveformAndMakesItsCycles) {
     // 0.1 % about 0: 2000 steps to the first peak, 4000 between peaks; two cycles end at step
     // 18000 of the test. Records every 400 steps, so every peak is a record.
-    const ExperimentConfig config = withTests(nlohmann::json::parse(
-        R"({"kind": "cyclic", "amplitude": 0.001, "cycles": 2})"));
+    const ExperimentConfig config =
+        withTests(nlohmann::json::parse(R"({"kind": "cyclic", "amplitude": 0.001, "cycles": 2})"));
     MemoryOutput out;
     ExperimentRunner runner(config, &out);
     runAll(runner);
@@ -429,8 +492,9 @@ TEST(ExperimentRunnerStages, ACyclicTestFollowsItsWaveformAndMakesItsCycles) {
     // Resumed from a checkpoint in the middle of a cycle (on the unloading leg), it ends the same.
     const Kept* middle = nullptr;
     for (const Kept& k : out.kept) {
-        if (!k.runnerState.empty() && k.identity.kind == "cyclic" && k.identity.axialStrain < 0.0009 &&
-            k.identity.axialStrain > -0.0009 && k.identity.step > start + 2000 && !middle) {
+        if (!k.runnerState.empty() && k.identity.kind == "cyclic" &&
+            k.identity.axialStrain < 0.0009 && k.identity.axialStrain > -0.0009 &&
+            k.identity.step > start + 2000 && !middle) {
             middle = &k;
         }
     }
@@ -480,9 +544,10 @@ TEST(ExperimentRunnerStages, ALooseSampleCycledAtConstantVolumeStopsWhenItLosesI
         }
     }
     EXPECT_EQ(notices, 1);
-    std::printf("loose sample, constant volume, amplitude 0.01 %%: stopped after %zu reversals, p' %.0f of "
-                "%.0f Pa\n",
-                reversalIndices(eps1).size(), column(t, rows.back(), "p"), p0);
+    std::printf(
+        "loose sample, constant volume, amplitude 0.01 %%: stopped after %zu reversals, p' %.0f of "
+        "%.0f Pa\n",
+        reversalIndices(eps1).size(), column(t, rows.back(), "p"), p0);
 }
 
 /// The responses (d sigma11, d sigma22) of a probes series: each probe's end minus the zero
@@ -520,7 +585,7 @@ TEST(ExperimentRunnerStages, ProbesStartFromOneStateBitForBitAndGiveAnEnvelope) 
             starts.push_back(&k);
         }
     }
-    ASSERT_EQ(starts.size(), 17u); // the zero probe's and the probes'
+    ASSERT_EQ(starts.size(), 17u);                     // the zero probe's and the probes'
     EXPECT_EQ(column(t, testRows(t)[1], "eps1"), 0.0); // the zero probe strains nothing
     for (const Kept* k : starts) {
         EXPECT_EQ(k->state.grains.x1, starts[0]->state.grains.x1) << k->name;
@@ -560,6 +625,60 @@ TEST(ExperimentRunnerStages, ProbesStartFromOneStateBitForBitAndGiveAnEnvelope) 
         ExperimentRunner resumed(config, partial.resumeFrom(*middle), &again);
         runAll(resumed);
         EXPECT_EQ(resumed.series().back().rows, t.rows);
+    }
+}
+
+TEST(ExperimentRunnerStages, ProbesStartAtAStrainOrAtThePeakOfTheTestBeforeAndResumeFromAnywhere) {
+    // A drained test to 0.2 % (4000 steps, a record every 400, a checkpoint every 1000), then
+    // eight probes of 1e-5 from eps1 = 0.08 % (step 1600, a record point) or from its peak of q/p.
+    for (const char* start : {"strain", "peak"}) {
+        nlohmann::json probes = {
+            {"kind", "probes"}, {"count", 8}, {"increment", 1e-5}, {"start", start}};
+        if (std::string(start) == "strain") {
+            probes["start_strain"] = 0.0008;
+        }
+        const ExperimentConfig config =
+            withTests(nlohmann::json::array({{{"kind", "drained"}}, probes}));
+        MemoryOutput out;
+        ExperimentRunner unbroken(config, &out);
+        runAll(unbroken);
+        ASSERT_EQ(unbroken.series().size(), 3u) << start;
+        const SeriesTable& drained = unbroken.series()[1];
+        const SeriesTable& t = unbroken.series()[2];
+        ASSERT_EQ(testRows(t).size(), 10u) << start; // the start, the zero probe, 8 probes
+        // The drained record the probes start from: at eps1 = 0.08 %, or of the largest q/p
+        // (the first of equal maxima).
+        const std::vector<std::size_t> rows = testRows(drained);
+        std::size_t from = rows.front();
+        for (std::size_t r : rows) {
+            if (std::string(start) == "strain"
+                    ? std::abs(column(drained, r, "eps1") - 0.0008) < 1e-12
+                    : column(drained, r, "q_over_p") > column(drained, from, "q_over_p")) {
+                from = r;
+            }
+        }
+        ASSERT_NE(from, rows.front()) << start;
+        ASSERT_NE(from, rows.back()) << start; // not where the test ended
+        for (const char* name : {"sigma11", "sigma22", "e", "q_over_p"}) {
+            EXPECT_EQ(column(t, testRows(t).front(), name), column(drained, from, name))
+                << start << " " << name;
+        }
+        // Resumed from every checkpoint of the drained test and of the probes (in the middle,
+        // at the test's end, at each probe's start), the probes give the same rows.
+        int resumed = 0;
+        for (const Kept& k : out.kept) {
+            if (k.identity.peak || k.runnerState.empty() ||
+                (k.identity.kind != "shear" && k.identity.kind != "probes")) {
+                continue;
+            }
+            MemoryOutput again;
+            ExperimentRunner from(config, out.resumeFrom(k), &again);
+            runAll(from);
+            ASSERT_EQ(from.series().size(), 3u) << start << " " << k.name;
+            EXPECT_EQ(from.series()[2].rows, t.rows) << start << " from " << k.name;
+            ++resumed;
+        }
+        EXPECT_GE(resumed, 12) << start;
     }
 }
 

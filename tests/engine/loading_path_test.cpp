@@ -65,6 +65,15 @@ TEST(LoadingPathReader, EachKindAndItsDefaults) {
     EXPECT_EQ(ps.plane, LoadingPath::Plane::Stress);
     EXPECT_EQ(ps.start, LoadingPath::Start::Strain);
     EXPECT_EQ(ps.startStrain, 0.02);
+
+    // Compression unless the file says extension, which names the series apart.
+    EXPECT_FALSE(read(R"({"test": {"kind": "constant_volume"}})").extension);
+    const LoadingPath ext =
+        read(R"({"test": {"kind": "constant_volume", "direction": "extension"}})");
+    EXPECT_TRUE(ext.extension);
+    EXPECT_EQ(testSuffix(ext), "-constant-volume-extension");
+    EXPECT_EQ(testSuffix(read(R"({"test": {"direction": "extension"}})")), "-extension");
+    EXPECT_EQ(testSuffix(read(R"({"test": {"direction": "compression"}})")), "");
 }
 
 struct BadInput {
@@ -106,6 +115,9 @@ TEST(LoadingPathReader, RefusalsNameTheFileTheKeyAndTheRange) {
         {R"({"kind": "probes", "start": "peak", "start_strain": 0.1})", "test.start_strain",
          "strain"},
         {R"({"kind": "probes", "cout": 8})", "test.cout", "count"},
+        {R"({"kind": "constant_p", "direction": "sideways"})", "test.direction", "extension"},
+        {R"({"kind": "cyclic", "amplitude": 0.01, "direction": "extension"})", "test.direction",
+         "kinds \"drained\", \"constant_volume\", \"constant_p\", \"stress_path\" only"},
     };
     for (const BadInput& bad : table) {
         try {

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include <QDir>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QImage>
@@ -259,9 +260,18 @@ TEST(WindowRun, AConstantVolumeTestChosenInTheParametersRunsAndDrawsItsStressPat
     p->testKindEdit()->setCurrentIndex(
         p->testKindEdit()->findData(QStringLiteral("constant_volume")));
     EXPECT_FALSE(p->pathSlopeEdit()->isEnabled());
+    // Extension is a tick away, and written as the test's direction.
+    ASSERT_TRUE(p->extensionEdit()->isEnabled());
+    p->extensionEdit()->setChecked(true);
+    EXPECT_NE(w.editedExperimentText().toStdString().find("\"direction\": \"extension\""),
+              std::string::npos)
+        << w.editedExperimentText().toStdString();
+    EXPECT_TRUE(p->applied().tests.at(0).extension);
+    p->extensionEdit()->setChecked(false);
     ASSERT_TRUE(p->valid());
     ASSERT_EQ(p->applied().tests.size(), 1u);
     EXPECT_EQ(p->applied().tests[0].kind, LoadingPath::Kind::ConstantVolume);
+    EXPECT_FALSE(p->applied().tests[0].extension);
     // What Save experiment as… writes reads back as the constant-volume test.
     const ExperimentConfig saved =
         parseExperimentText(w.editedExperimentText().toStdString(), "saved.json");

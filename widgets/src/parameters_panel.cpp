@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -21,7 +22,8 @@ ParametersPanel::ParametersPanel(QWidget* parent)
     : QWidget(parent), compactionPressures_(new QLabel(this)), shearPressures_(new QLineEdit(this)),
       grains_(new QSpinBox(this)), friction_(new QDoubleSpinBox(this)),
       strain_(new QDoubleSpinBox(this)), testKind_(new QComboBox(this)),
-      slope_(new QDoubleSpinBox(this)), message_(new QLabel(this)) {
+      slope_(new QDoubleSpinBox(this)), extension_(new QCheckBox(tr("extension"), this)),
+      message_(new QLabel(this)) {
     auto* form = new QFormLayout(this);
     form->setContentsMargins(4, 4, 4, 4);
     compactionPressures_->setToolTip(tr("The experiment file's compaction stages, in kPa: the "
@@ -47,6 +49,8 @@ ParametersPanel::ParametersPanel(QWidget* parent)
     slope_->setDecimals(3);
     slope_->setSingleStep(0.1);
     slope_->setToolTip(tr("The stress path's slope a = dσ22/dσ11 (0: drained, −1: constant p)."));
+    extension_->setToolTip(tr("Lengthen axis 1 instead of shortening it (ε1 < 0), at the same "
+                              "strain per step: the test in extension."));
     message_->setWordWrap(true);
     message_->setStyleSheet(QStringLiteral("color: #b00020"));
     form->addRow(tr("Compaction pressures [kPa]"), compactionPressures_);
@@ -56,6 +60,7 @@ ParametersPanel::ParametersPanel(QWidget* parent)
     form->addRow(tr("Axial strain target ε1"), strain_);
     form->addRow(tr("Test"), testKind_);
     form->addRow(tr("Stress path slope a"), slope_);
+    form->addRow(tr("Axis 1"), extension_);
     form->addRow(message_);
     connect(shearPressures_, &QLineEdit::textChanged, this, &ParametersPanel::check);
     connect(grains_, &QSpinBox::valueChanged, this, &ParametersPanel::check);
@@ -63,6 +68,7 @@ ParametersPanel::ParametersPanel(QWidget* parent)
     connect(strain_, &QDoubleSpinBox::valueChanged, this, &ParametersPanel::check);
     connect(testKind_, &QComboBox::currentIndexChanged, this, &ParametersPanel::check);
     connect(slope_, &QDoubleSpinBox::valueChanged, this, &ParametersPanel::check);
+    connect(extension_, &QCheckBox::toggled, this, &ParametersPanel::check);
 }
 
 void ParametersPanel::setExperiment(const ExperimentConfig& config) {
@@ -105,6 +111,7 @@ void ParametersPanel::setExperiment(const ExperimentConfig& config) {
         }
     }
     slope_->setValue(config.tests.size() == 1 ? config.tests.front().slope : 0.0);
+    extension_->setChecked(config.tests.size() == 1 && config.tests.front().extension);
     check();
 }
 
@@ -167,6 +174,7 @@ ExperimentConfig ParametersPanel::applied() const {
             }
         }
         test.slope = test.kind == LoadingPath::Kind::StressPath ? slope_->value() : 0.0;
+        test.extension = extension_->isChecked();
         c.tests = {test};
     }
     return c;
@@ -174,6 +182,7 @@ ExperimentConfig ParametersPanel::applied() const {
 
 void ParametersPanel::check() {
     slope_->setEnabled(testKind_->currentData().toString() == QStringLiteral("stress_path"));
+    extension_->setEnabled(!testKind_->currentData().toString().isEmpty());
     const QString why = problem();
     message_->setText(why);
     message_->setVisible(!why.isEmpty());

@@ -51,6 +51,10 @@ struct ResumePoint {
     /// state names a checkpoint that keeps it (runningPeakCheckpoint(); the run file's group
     /// running_peak of that checkpoint). Empty otherwise.
     std::optional<SimulationState> runningPeak;
+    /// The start state of probes that start at a strain or the peak of the test before them,
+    /// when the runner state names a checkpoint that keeps it (probeStartCheckpoint(); the run
+    /// file's group probe_start of that checkpoint). Empty otherwise.
+    std::optional<SimulationState> probeStart;
 };
 
 /// The engine threads a run of `config` uses: its `threads`, but one thread per 2000 grains at
@@ -99,6 +103,10 @@ public:
     /// under way) a run resumed from this runner state needs in ResumePoint::runningPeak; ""
     /// when it needs none (no test under way, or the peak is at the checkpoint's own step).
     static std::string runningPeakCheckpoint(const std::string& runnerState);
+    /// The checkpoint whose probe start state (of probes that start at a strain or the peak of
+    /// the test before them, once that test has passed it) a run resumed from this runner state
+    /// needs in ResumePoint::probeStart; "" when it needs none.
+    static std::string probeStartCheckpoint(const std::string& runnerState);
 
 private:
     struct Impl;

@@ -30,6 +30,9 @@ struct LoadingPath {
 
     Kind kind = Kind::Drained;
     double slope = 0; ///< a = d sigma22 / d sigma11, StressPath [-]
+    /// Drained, ConstantVolume, ConstantP, StressPath: axis 1 lengthened (eps1 < 0) instead of
+    /// shortened, at the same strain per step.
+    bool extension = false;
 
     // Cyclic.
     Control control = Control::Strain;
@@ -61,7 +64,8 @@ LoadingPath readLoadingPath(const JsonSection& experiment);
 /// drained test when absent. Refuses two tests of one name (testSuffix()).
 std::vector<LoadingPath> readLoadingPaths(const JsonSection& experiment);
 /// What a test adds to its sample's series name ("p015kPa"): "" for the drained test,
-/// "-constant-volume", "-constant-p", "-path-0.5" (a stress path of slope -0.5), "-cyclic", ...
+/// "-constant-volume", "-constant-p", "-path-0.5" (a stress path of slope -0.5), "-cyclic", ...;
+/// a test in extension adds "-extension" ("-extension", "-constant-volume-extension").
 std::string testSuffix(const LoadingPath& path);
 
 /// The triangular eps1 waveform of a strain-controlled cyclic test, on the grid of a constant

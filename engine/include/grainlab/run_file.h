@@ -109,6 +109,9 @@ std::string checkpointGroup(const std::string& name);
 std::string sampleGroup(double pressure);
 /// Group of the running peak kept in checkpoint `name`: "<checkpointGroup(name)>/running_peak".
 std::string runningPeakGroup(const std::string& name);
+/// Group of the probes' start state kept in checkpoint `name`:
+/// "<checkpointGroup(name)>/probe_start".
+std::string probeStartGroup(const std::string& name);
 
 /// The state stored in `groupPath` (a checkpoint or a sample), bit for bit as written.
 SimulationState readState(const std::string& path, const std::string& groupPath);

@@ -47,6 +47,10 @@ struct CheckpointData {
     /// names this checkpoint as where it is kept (a resumed run continues the maximum from it;
     /// see ExperimentRunner::runningPeakCheckpoint). Null otherwise.
     const SimulationState* runningPeak = nullptr;
+    /// The start state of probes that start at a strain or the peak of the test under way,
+    /// when the runner state names this checkpoint as where it is kept (see
+    /// ExperimentRunner::probeStartCheckpoint). Null otherwise.
+    const SimulationState* probeStart = nullptr;
 };
 
 class RunOutput {

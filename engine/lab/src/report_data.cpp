@@ -291,11 +291,11 @@ bool isMonotonicTable(const SeriesTable& t) {
 }
 
 std::optional<std::vector<std::array<double, 2>>> probeResponses(const SeriesTable& t,
-                                                                  bool complete) {
+                                                                 bool complete) {
     const std::vector<std::size_t> rows = shearRows(t);
     const int s11 = t.column("sigma11"), s22 = t.column("sigma22");
-    const bool enough = complete ? rows.size() >= 6 && (rows.size() - 2) % 2 == 0
-                                 : rows.size() >= 3;
+    const bool enough =
+        complete ? rows.size() >= 6 && (rows.size() - 2) % 2 == 0 : rows.size() >= 3;
     if (!enough || s11 < 0 || s22 < 0) {
         return std::nullopt;
     }
@@ -400,14 +400,16 @@ CriticalStateSummary criticalStateOf(const std::vector<ReportRun>& runs,
             end.test = table.test;
             end.pressure = t < run.pressures.size() ? run.pressures[t] : 0.0;
             const std::vector<std::size_t> rows = shearRows(table);
-            end.kind = table.stageKinds.size() == table.rows.size()
-                           ? table.stageKinds[rows.back()]
-                           : table.stages[rows.back()].substr(0, table.stages[rows.back()].find(' '));
+            end.kind =
+                table.stageKinds.size() == table.rows.size()
+                    ? table.stageKinds[rows.back()]
+                    : table.stages[rows.back()].substr(0, table.stages[rows.back()].find(' '));
             end.steady = steadyState(q.x, q.y, p.y, epsv.y, criterion);
             end.q = q.y.back();
             end.p = p.y.back();
             end.e = e.y.back();
-            end.stressRatio = end.p > 0 ? end.q / end.p : 0.0;
+            // |q|/p: M is the same for a test in extension (q < 0) in 2D.
+            end.stressRatio = end.p > 0 ? std::abs(end.q) / end.p : 0.0;
             if (end.steady.steady) {
                 all.push_back(end.stressRatio);
                 (end.kind == "constant_volume" ? constantVolume : drained)
@@ -441,8 +443,8 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
 
     // 2. phi at the peak of q/p against the confining pressure.
     {
-        ReportFigure f = figureOf("02_phi_peak", "Friction angle at the peak", "pressure",
-                                  "phi_deg");
+        ReportFigure f =
+            figureOf("02_phi_peak", "Friction angle at the peak", "pressure", "phi_deg");
         f.xLabel = "confining pressure [kPa]"; // the points' x is in kPa already
         f.yLabel = "φ at the peak [°]";
         ReportLine line;
@@ -578,8 +580,8 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
         add(std::move(f));
     }
     if (cs.steadyCount() > 0) {
-        ReportFigure f = figureOf("09_e_vs_ln_p", "Steady ends in the e − ln p′ plane", "ln_p",
-                                  "e");
+        ReportFigure f =
+            figureOf("09_e_vs_ln_p", "Steady ends in the e − ln p′ plane", "ln_p", "e");
         f.xLabel = "ln(p′ / 1 Pa)";
         for (const TestKey& key : keys) {
             std::vector<double> lnP, e;
@@ -603,8 +605,8 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
             f.lines.push_back(std::move(line));
         }
         if (cs.line) {
-            f.fit = LinearFit{-cs.line->lambda, cs.line->eGamma, cs.line->rSquared,
-                              cs.line->points};
+            f.fit =
+                LinearFit{-cs.line->lambda, cs.line->eGamma, cs.line->rSquared, cs.line->points};
             f.fitLabel = fmt::format("{} (R² = {:.3f})", cs.line->equation(), cs.line->rSquared);
         }
         f.note = "each point: a test's steady end, mean ± 1σ over the runs";
@@ -614,12 +616,12 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
     // 10. Each cyclic test: its q - eps1 loops and p'/p0 at the end of each cycle, run by run
     // (a loop is no curve against eps1, so no mean over runs is drawn).
     for (const TestKey& key : testsOf(runs, isCyclicTable)) {
-        ReportFigure loops = figureOf("10_" + key.test + "_loops",
-                                      "q against ε1, " + testLabel(key), "eps1", "q");
+        ReportFigure loops =
+            figureOf("10_" + key.test + "_loops", "q against ε1, " + testLabel(key), "eps1", "q");
         loops.bands = false;
-        ReportFigure cycles = figureOf("10_" + key.test + "_p_per_cycle",
-                                       "p′ at the end of each cycle, " + testLabel(key),
-                                       "cycle", "p_over_p0");
+        ReportFigure cycles =
+            figureOf("10_" + key.test + "_p_per_cycle",
+                     "p′ at the end of each cycle, " + testLabel(key), "cycle", "p_over_p0");
         cycles.xLabel = "cycle";
         cycles.yLabel = "p′/p0";
         cycles.bands = false;
@@ -634,8 +636,8 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
                 }
                 loops.lines.push_back(runLine(run, key, q.x, q.y));
                 PressurePerCycle perCycle = pressurePerCycle(t);
-                cycles.lines.push_back(runLine(run, key, std::move(perCycle.cycle),
-                                               std::move(perCycle.ratio)));
+                cycles.lines.push_back(
+                    runLine(run, key, std::move(perCycle.cycle), std::move(perCycle.ratio)));
             }
         }
         cycles.note = "p′/p0 at each upper peak of ε1 (a cycle's end), cycle 0 the test's start";
@@ -647,8 +649,7 @@ std::vector<ReportFigure> reportFigures(const std::vector<ReportRun>& runs,
     // far it is from an elastic one (opposite responses to opposite inputs, an ellipse).
     for (const TestKey& key : testsOf(runs, isProbesTable)) {
         ReportFigure f = figureOf("11_" + key.test + "_envelope",
-                                  "Response envelope, " + testLabel(key), "d_sigma11",
-                                  "d_sigma22");
+                                  "Response envelope, " + testLabel(key), "d_sigma11", "d_sigma22");
         f.xLabel = "Δσ11 [kPa]";
         f.yLabel = "Δσ22 [kPa]";
         f.xScale = f.yScale = 1e-3;

@@ -17,11 +17,12 @@ bool isTestName(const std::string& kind) {
     return k && isTestStage(*k);
 }
 
-/// The row of `rows` where `column` is largest (the first of equal maxima).
-std::size_t rowOfLargest(const SeriesTable& t, const std::vector<std::size_t>& rows, int column) {
+/// The row of `rows` where `sign` times `column` is largest (the first of equal maxima).
+std::size_t rowOfLargest(const SeriesTable& t, const std::vector<std::size_t>& rows, int column,
+                         double sign = 1.0) {
     std::size_t best = rows.front();
     for (std::size_t k : rows) {
-        if (t.rows[k][std::size_t(column)] > t.rows[best][std::size_t(column)]) {
+        if (sign * t.rows[k][std::size_t(column)] > sign * t.rows[best][std::size_t(column)]) {
             best = k;
         }
     }
@@ -58,16 +59,15 @@ std::vector<std::size_t> shearRows(const SeriesTable& t) {
     std::vector<std::size_t> rows;
     for (std::size_t k = 0; k < t.rows.size(); ++k) {
         const bool shear =
-            identified ? isTestName(t.stageKinds[k])
-                       : k < t.stages.size() && isTestName(t.stages[k].substr(
-                                                    0, t.stages[k].find(' ')));
+            identified
+                ? isTestName(t.stageKinds[k])
+                : k < t.stages.size() && isTestName(t.stages[k].substr(0, t.stages[k].find(' ')));
         if (shear) {
             rows.push_back(k);
         }
     }
     return rows;
 }
-
 
 Curve shearCurve(const SeriesTable& test, const std::string& column) {
     Curve c;
@@ -96,27 +96,42 @@ ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
     const int ratio = test.column("q_over_p"), eps1 = test.column("eps1");
     const int phi = test.column("phi_deg"), di = test.column("DI");
     const int s22 = test.column("sigma22"), iuf = test.column("I_uf");
+    // A test in extension (eps1 < 0 at its end): its peak is the largest -q (or -q/p), and its
+    // values at a metric strain are at eps1 = -strain.
+    // (Cyclic tests and probes go both ways: never mirrored.)
+    const std::string lastKind =
+        test.stageKinds.size() == test.rows.size() ? test.stageKinds[rows.back()] : "shear";
+    const bool oneWay = lastKind != "cyclic" && lastKind != "probes";
+    const double sign =
+        oneWay && eps1 >= 0 && test.rows[rows.back()][std::size_t(eps1)] < 0 ? -1.0 : 1.0;
+    const auto shearCurve = [&](const std::string& column) {
+        Curve c = grainlab::shearCurve(test, column);
+        for (double& x : c.x) {
+            x *= sign;
+        }
+        return c;
+    };
     if (ratio >= 0 && eps1 >= 0) {
-        const std::size_t peak = rowOfLargest(test, rows, ratio);
+        const std::size_t peak = rowOfLargest(test, rows, ratio, sign);
         m.peakStressRatio = cell(test, ratio, peak);
         m.peakAxialStrain = cell(test, eps1, peak);
         m.peakFrictionAngle = cell(test, phi, peak);
     }
-    const Curve q = shearCurve(test, "q_over_p"), ev = shearCurve(test, "epsv");
+    const Curve q = shearCurve("q_over_p"), ev = shearCurve("epsv");
     for (int s = 0; s < 3; ++s) {
         m.stressRatioAt[s] = valueAtStrain(q, kMetricStrains[s]);
         m.volumetricStrainAt[s] = valueAtStrain(ev, kMetricStrains[s]);
     }
     const double at10 = kMetricStrains[2];
-    m.coordinationAt5 = valueAtStrain(shearCurve(test, "Z"), kMetricStrains[1]);
-    m.coordinationAt10 = valueAtStrain(shearCurve(test, "Z"), at10);
-    m.effectiveCoordinationAt10 = valueAtStrain(shearCurve(test, "Z_eff"), at10);
-    m.voidCountRatioAt10 = valueAtStrain(shearCurve(test, "Nv_over_Nvi"), at10);
-    m.fabricAt10 = valueAtStrain(shearCurve(test, "Hdev"), at10);
+    m.coordinationAt5 = valueAtStrain(shearCurve("Z"), kMetricStrains[1]);
+    m.coordinationAt10 = valueAtStrain(shearCurve("Z"), at10);
+    m.effectiveCoordinationAt10 = valueAtStrain(shearCurve("Z_eff"), at10);
+    m.voidCountRatioAt10 = valueAtStrain(shearCurve("Nv_over_Nvi"), at10);
+    m.fabricAt10 = valueAtStrain(shearCurve("Hdev"), at10);
 
     // Which kind of test the rows are: only a drained test holds sigma22 at the pressure.
-    const bool drained = test.stageKinds.size() != test.rows.size() ||
-                         test.stageKinds[rows.back()] == "shear";
+    const bool drained =
+        test.stageKinds.size() != test.rows.size() || test.stageKinds[rows.back()] == "shear";
     double maxDi = -INFINITY, maxError = 0, sumIuf = 0;
     for (std::size_t k : rows) {
         const auto& r = test.rows[k];
@@ -140,11 +155,11 @@ ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
 
     const int qc = test.column("q"), pc = test.column("p");
     if (qc >= 0 && pc >= 0) {
-        const std::size_t peak = rowOfLargest(test, rows, qc);
+        const std::size_t peak = rowOfLargest(test, rows, qc, sign);
         m.peakDeviator = cell(test, qc, peak);
         m.meanStressAtPeakDeviator = cell(test, pc, peak);
-        const Curve qCurve = shearCurve(test, "q"), pCurve = shearCurve(test, "p");
-        const Curve vCurve = shearCurve(test, "epsv");
+        const Curve qCurve = shearCurve("q"), pCurve = shearCurve("p");
+        const Curve vCurve = shearCurve("epsv");
         if (pCurve.y.front() > 0) {
             double lowest = pCurve.y.front();
             for (double v : pCurve.y) {
@@ -158,7 +173,9 @@ ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
         }
         if (vCurve.y.size() == qCurve.y.size() &&
             steadyState(qCurve.x, qCurve.y, pCurve.y, vCurve.y).steady && pCurve.y.back() > 0) {
-            m.criticalStressRatio = qCurve.y.back() / pCurve.y.back();
+            // |q|/p: in 2D the Mohr-Coulomb criterion gives the same |q|/p = sin(phi) in
+            // compression and in extension.
+            m.criticalStressRatio = std::abs(qCurve.y.back()) / pCurve.y.back();
         }
     }
     if (iuf >= 0) {

@@ -20,7 +20,7 @@ namespace grainlab {
 
 /// One run of the experiment: the series of its shear tests.
 struct ReportRun {
-    std::string name;              ///< e.g. the run folder's name
+    std::string name;               ///< e.g. the run folder's name
     std::vector<SeriesTable> tests; ///< one table per shear test
     std::vector<double> pressures;  ///< the confining pressure of each test [Pa]
 };
@@ -28,9 +28,9 @@ struct ReportRun {
 /// One line (or set of points) of a figure: a test's mean over the runs, with the sample
 /// standard deviation at each point.
 struct ReportLine {
-    std::string label;    ///< e.g. "15 kPa", "strong contacts"
-    std::string test;     ///< e.g. "p015kPa" ("" for a line over every test)
-    double pressure = 0;  ///< [Pa] (0 for a line over every test)
+    std::string label;            ///< e.g. "15 kPa", "strong contacts"
+    std::string test;             ///< e.g. "p015kPa" ("" for a line over every test)
+    double pressure = 0;          ///< [Pa] (0 for a line over every test)
     std::vector<double> x, y, sd; ///< sd: of y over the runs (0 with one run)
     std::vector<double> xSd;      ///< of x over the runs, for lines of one series against another
     std::vector<int> runs;        ///< runs that reach each point
@@ -43,22 +43,22 @@ struct ReportLine {
 struct LinearFit {
     double slope = 0;
     double intercept = 0;
-    double r2 = 0;       ///< 1 - SS_res / SS_tot
+    double r2 = 0;         ///< 1 - SS_res / SS_tot
     std::size_t count = 0; ///< points fitted
 };
 /// The least-squares line through (x[k], y[k]); nothing for fewer than two distinct x.
 std::optional<LinearFit> fitLine(const std::vector<double>& x, const std::vector<double>& y);
 
 struct ReportFigure {
-    std::string name;     ///< the file stem, e.g. "01_q_over_p"
+    std::string name; ///< the file stem, e.g. "01_q_over_p"
     std::string title;
-    std::string xColumn;  ///< the series column on x ("eps1", ...; "pressure" for figure 2)
-    std::string xLabel;   ///< as a paper prints it, with the drawn unit, e.g. "ε1 [%]"
+    std::string xColumn; ///< the series column on x ("eps1", ...; "pressure" for figure 2)
+    std::string xLabel;  ///< as a paper prints it, with the drawn unit, e.g. "ε1 [%]"
     std::string yColumn;
     std::string yLabel;
     std::vector<ReportLine> lines; ///< in the columns' stored units (the CSV's)
-    std::optional<LinearFit> fit; ///< drawn as a line with its equation (figure 6)
-    std::string note;             ///< a sentence for the report (e.g. the smoothing window)
+    std::optional<LinearFit> fit;  ///< drawn as a line with its equation (figure 6)
+    std::string note;              ///< a sentence for the report (e.g. the smoothing window)
     double xScale = 1.0; ///< drawn value = stored value * scale (100: a strain in percent)
     double yScale = 1.0;
     std::string fitLabel; ///< the fit line's legend; "" for its equation (fitEquation)
@@ -69,7 +69,7 @@ struct ReportFigure {
 
 /// How the figures sample the curves.
 struct ReportOptions {
-    int gridPoints = 201;       ///< points of the common eps1 axis
+    int gridPoints = 201;           ///< points of the common eps1 axis
     double dilatancyWindow = 0.005; ///< the eps1 window of the smoothed dilatancy index [-]
 };
 
@@ -86,7 +86,7 @@ bool isMonotonicTable(const SeriesTable& t);
 /// `complete` false, the responses of the probes recorded so far (a probe set still running),
 /// nothing before the first.
 std::optional<std::vector<std::array<double, 2>>> probeResponses(const SeriesTable& t,
-                                                                  bool complete = true);
+                                                                 bool complete = true);
 
 /// The upper peaks of a cyclic test's eps1 (indices): its reversals 0, 2, 4, ... (a cycle runs
 /// from one to the next), and the last record when the test ended on one.
@@ -101,13 +101,13 @@ PressurePerCycle pressurePerCycle(const SeriesTable& t);
 
 /// The end of one test of one run, as the critical state reads it.
 struct TestEndState {
-    std::string run;       ///< ReportRun::name
-    std::string test;      ///< e.g. "p025kPa-constant-volume"
-    std::string kind;      ///< its test rows' stage kind: "shear" (drained), "constant_volume", ...
-    double pressure = 0;   ///< the confining pressure of its sample [Pa]
+    std::string run;     ///< ReportRun::name
+    std::string test;    ///< e.g. "p025kPa-constant-volume"
+    std::string kind;    ///< its test rows' stage kind: "shear" (drained), "constant_volume", ...
+    double pressure = 0; ///< the confining pressure of its sample [Pa]
     SteadyStateResult steady;
     double q = 0, p = 0, e = 0; ///< at its last record [Pa, Pa, -]
-    double stressRatio = 0;     ///< q/p there [-]
+    double stressRatio = 0;     ///< |q|/p there (q < 0 in extension) [-]
 };
 
 /// The critical state of the runs' tests: every test's end, M = q/p at the end over the steady
@@ -144,16 +144,16 @@ struct PublishedValue {
 
 /// How a measured value compares with the published one.
 struct Comparison {
-    double difference = 0;     ///< measured mean - published value
-    bool agrees = false;       ///< bound: mean below it; value: |difference| <= 2 sd
+    double difference = 0;      ///< measured mean - published value
+    bool agrees = false;        ///< bound: mean below it; value: |difference| <= 2 sd
     bool beyondScatter = false; ///< |difference| > 2 sd of the runs (always with one run)
 };
 Comparison compare(const Scatter& measured, const PublishedValue& published);
 
 struct HeadlineRow {
-    std::string key;   ///< e.g. "e_compacted"
-    std::string label; ///< e.g. "e after compaction"
-    std::string unit;  ///< e.g. "-", "deg", "%"
+    std::string key;                   ///< e.g. "e_compacted"
+    std::string label;                 ///< e.g. "e after compaction"
+    std::string unit;                  ///< e.g. "-", "deg", "%"
     std::vector<HeadlineValue> values; ///< one per test, in pressure order
     std::optional<PublishedValue> published;
 };
@@ -172,8 +172,8 @@ struct PooledFitScatter {
 PooledFitScatter pooledFitOverRuns(const std::vector<ReportRun>& runs);
 
 /// The published study's statements the report compares with.
-inline constexpr double kPublishedVoidRatio = 0.126;       ///< after compaction, every pressure
-inline constexpr double kPublishedFitSlope = 3.45;         ///< Z_eff = 3.45 N_v/N_vi + 2.1
+inline constexpr double kPublishedVoidRatio = 0.126; ///< after compaction, every pressure
+inline constexpr double kPublishedFitSlope = 3.45;   ///< Z_eff = 3.45 N_v/N_vi + 2.1
 inline constexpr double kPublishedFitIntercept = 2.1;
 inline constexpr double kPublishedUnbalancedForceMax = 0.4; ///< mean I_uf during shear < 0.4 %
 /// The same statements as compared in the table, with their text.

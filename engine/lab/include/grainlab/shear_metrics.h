@@ -21,7 +21,9 @@ namespace grainlab {
 inline constexpr double kMetricStrains[] = {0.02, 0.05, 0.10};
 
 struct ShearMetrics {
-    std::optional<double> peakStressRatio;       ///< largest q/p during shear [-]
+    /// largest q/p during shear; in extension (eps1 < 0), the most negative, and the values
+    /// "at a strain" below are at eps1 = -strain [-]
+    std::optional<double> peakStressRatio;
     std::optional<double> peakAxialStrain;       ///< eps1 at that peak [-]
     std::optional<double> peakFrictionAngle;     ///< phi at that peak [deg]
     std::optional<double> stressRatioAt[3];      ///< q/p at eps1 = kMetricStrains [-]
@@ -36,14 +38,15 @@ struct ShearMetrics {
     /// max |sigma22 - p0| / p0 during a drained test (empty for other kinds, whose sigma22
     /// follows their path) [-]
     std::optional<double> maxLateralStressError;
-    std::optional<double> meanUnbalancedForce;       ///< mean I_uf over the shear records [%]
+    std::optional<double> meanUnbalancedForce; ///< mean I_uf over the shear records [%]
     /// Work dissipated by damping during shear as a fraction of the boundary work, the latter
     /// taken from the energy balance: W_b = dE_kin + dE_elastic + dW_friction + dW_damping [-].
     std::optional<double> dampingWorkFraction;
-    std::optional<double> peakDeviator;            ///< largest q during the test [Pa]
+    std::optional<double> peakDeviator;             ///< largest q during the test [Pa]
     std::optional<double> meanStressAtPeakDeviator; ///< p′ there [Pa]
-    /// q/p at the test's end when the end is steady (critical_state.h, default criterion): the
-    /// test's estimate of M; empty when it is not steady [-]
+    /// |q|/p at the test's end when the end is steady (critical_state.h, default criterion): the
+    /// test's estimate of M (the same in compression and extension in 2D); empty when it is not
+    /// steady [-]
     std::optional<double> criticalStressRatio;
     /// A cyclic test's completed cycles (reversals of eps1 over its records, halved): with a
     /// stop on p', the cycles to that criterion; empty for other kinds [-]

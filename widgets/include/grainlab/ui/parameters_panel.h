@@ -17,6 +17,7 @@
 
 #include "grainlab/experiment.h"
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -50,6 +51,7 @@ public:
     QComboBox* testKindEdit() const { return testKind_; }
     /// The stress path's slope a (enabled for a stress path only).
     QDoubleSpinBox* pathSlopeEdit() const { return slope_; }
+    QCheckBox* extensionEdit() const { return extension_; }
 
 signals:
     /// Any entry changed; `valid` tells whether the whole set is usable.
@@ -69,6 +71,7 @@ private:
     QDoubleSpinBox* strain_;
     QComboBox* testKind_;
     QDoubleSpinBox* slope_;
+    QCheckBox* extension_;
     QLabel* message_;
 };
 
