@@ -18,13 +18,13 @@
 #include <QToolTip>
 #include <QVBoxLayout>
 
+#include "common/resources.h"
 #include "grainlab/ui/heat_map_view.h"
 #include "gui/command_process.h"
 #include "gui/duration_text.h"
 #include "gui/stability_map_text.h"
 #include "gui/ui_text.h"
 #include "gui/window_run_folder.h"
-#include "common/resources.h"
 
 namespace grainlab::ui {
 namespace {
@@ -81,7 +81,10 @@ double shownValue(const StabilityCellResult& r, StabilityValue value) {
 StabilityView::StabilityView(QWidget* parent, QString grainlab)
     : QWidget(parent),
       grainlab_(grainlab.isEmpty() ? QCoreApplication::applicationFilePath() : grainlab),
-      command_(new CommandProcess(this)), workerContext_(new QObject) {
+      command_(new CommandProcess(this)),
+      row_(tr("Run the map (grainlab stability … --out FOLDER); a stopped map continues where "
+              "it stopped"),
+           tr("Stop the map: the cells done are kept; Start continues"), tr("cells")) {
     connect(command_, &CommandProcess::ended, this,
             [this](int code, const QString&, const QString& startError) {
                 if (!startError.isEmpty()) {
@@ -89,8 +92,6 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
                 }
                 processEnded(code);
             });
-    workerContext_->moveToThread(&worker_);
-    worker_.start();
     poll_.setInterval(kPollMs);
     connect(&poll_, &QTimer::timeout, this, [this] {
         rescan();
@@ -130,28 +131,13 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
     files->addWidget(folderHint, 2, 1, 1, 3);
     files->setColumnStretch(2, 1);
 
-    startButton_ = new QPushButton(tr("Start"));
-    startButton_->setToolTip(tr("Run the map (grainlab stability … --out FOLDER); a stopped map "
-                                "continues where it stopped"));
-    connect(startButton_, &QPushButton::clicked, this, [this] {
+    connect(row_.start, &QPushButton::clicked, this, [this] {
         QString error;
         if (!start(&error)) {
             status_->setText(error);
         }
     });
-    stopButton_ = new QPushButton(tr("Stop"));
-    stopButton_->setToolTip(tr("Stop the map: the cells done are kept; Start continues"));
-    connect(stopButton_, &QPushButton::clicked, this, &StabilityView::stop);
-    bar_ = new QProgressBar;
-    bar_->setFormat(tr("%v / %m cells"));
-    bar_->setRange(0, 1);
-    bar_->setValue(0);
-    progressText_ = new QLabel;
-    auto* runRow = new QHBoxLayout;
-    runRow->addWidget(startButton_);
-    runRow->addWidget(stopButton_);
-    runRow->addWidget(bar_, 1);
-    runRow->addWidget(progressText_);
+    connect(row_.stop, &QPushButton::clicked, this, &StabilityView::stop);
 
     xAxis_ = new QComboBox;
     yAxis_ = new QComboBox;
@@ -209,7 +195,7 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(files);
-    layout->addLayout(runRow);
+    layout->addLayout(row_.layout);
     layout->addLayout(mapRow);
     layout->addLayout(centre, 1);
     layout->addWidget(status_);
@@ -224,9 +210,6 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
 
 StabilityView::~StabilityView() {
     poll_.stop();
-    worker_.quit();
-    worker_.wait();
-    delete workerContext_;
     // A running map goes on without the window (its output goes to a file, not to us).
 }
 
@@ -331,7 +314,7 @@ void StabilityView::setMapFolder(const QString& folder) {
 void StabilityView::followFolder(const QString& folder, bool adoptItsMap) {
     folder_ = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
     folderLabel_->setText(folder_);
-    ++generation_;
+    scans_.forget();
     state_.reset();
     lastExit_.reset();
     adoptFolderMap_ = adoptItsMap;
@@ -349,12 +332,7 @@ bool StabilityView::running() const {
 }
 
 bool StabilityView::start(QString* error) {
-    const auto fail = [error](const QString& message) {
-        if (error) {
-            *error = message;
-        }
-        return false;
-    };
+    const auto fail = [error](const QString& message) { return refuseStart(error, message); };
     if (running()) {
         return fail(tr("The map is already running."));
     }
@@ -385,8 +363,7 @@ bool StabilityView::start(QString* error) {
                                               .arg(q(name))
                                               .arg(QCoreApplication::applicationPid()));
     lastExit_.reset();
-    finishedAtStart_ = state_ ? state_->finishedCount() : 0;
-    sinceStart_.start();
+    row_.started(state_ ? state_->finishedCount() : 0);
     status_->setText(tr("Running: %1 %2").arg(grainlab_, arguments.join(QLatin1Char(' '))));
     command_->start(grainlab_, arguments, logPath);
     poll_.start();
@@ -398,7 +375,7 @@ bool StabilityView::start(QString* error) {
 void StabilityView::stop() {
     if (command_->stop()) {
         status_->setText(tr("Stopping: the running cells end; the cells done are kept…"));
-        stopButton_->setEnabled(false);
+        row_.stop->setEnabled(false);
     }
 }
 
@@ -407,19 +384,11 @@ void StabilityView::processEnded(int exitStatus) {
         poll_.stop();
     }
     lastExit_ = exitStatus;
-    if (exitStatus == 0) {
-        status_->setText(tr("The map finished. %1").arg(stabilityLogSummary(command_->logPath())));
-    } else if (exitStatus == 130 || command_->stopping()) {
-        // 130: the map stopped its cells; another status after Stop: stopped before it had
-        // started any.
-        status_->setText(tr("Stopped: the cells done are kept; Start continues the map."));
-    } else if (status_->text().startsWith(tr("Could not start"))) {
-        // said already
-    } else {
-        status_->setText(tr("The map failed (exit status %1):\n%2")
-                             .arg(exitStatus)
-                             .arg(stabilityLogSummary(command_->logPath())));
-    }
+    const QString said = stabilityLogSummary(command_->logPath());
+    status_->setText(commandEndedText(
+        exitStatus, command_->stopping(), status_->text(), tr("The map finished. %1").arg(said),
+        tr("Stopped: the cells done are kept; Start continues the map."),
+        tr("The map failed (exit status %1):\n") + said));
     rescan();
     updateControls();
     updateProgressText();
@@ -430,41 +399,20 @@ void StabilityView::rescan() {
     if (folder_.isEmpty()) {
         return;
     }
-    if (scanning_) {
-        rescanWanted_ = true;
-        return;
-    }
-    scanning_ = true;
     // Everything the scan needs is copied in: the worker never touches the view.
-    QMetaObject::invokeMethod(
-        workerContext_,
-        [this, generation = generation_, folder = folder_.toStdString(), previous = state_] {
-            std::shared_ptr<const StabilityFolder> next;
-            QString error;
-            try {
-                next = scanStabilityFolder(folder, previous);
-            } catch (const std::exception& e) {
-                error = QString::fromStdString(e.what());
-            }
-            QMetaObject::invokeMethod(
-                this,
-                [this, generation, next, error] {
-                    scanning_ = false;
-                    if (generation == generation_) {
-                        if (next) {
-                            scanned(next);
-                        } else {
-                            status_->setText(error);
-                        }
-                    }
-                    if (rescanWanted_) {
-                        rescanWanted_ = false;
-                        rescan();
-                    }
-                },
-                Qt::QueuedConnection);
+    scans_.request<StabilityFolder>(
+        this,
+        [folder = folder_.toStdString(), previous = state_] {
+            return scanStabilityFolder(folder, previous);
         },
-        Qt::QueuedConnection);
+        [this](std::shared_ptr<const StabilityFolder> next, const QString& error) {
+            if (next) {
+                scanned(std::move(next));
+            } else {
+                status_->setText(error);
+            }
+        },
+        [this] { rescan(); });
 }
 
 void StabilityView::scanned(std::shared_ptr<const StabilityFolder> state) {
@@ -601,9 +549,9 @@ void StabilityView::updateControls() {
     const bool isRunning = running();
     const bool refused = state_ && state_->kind == StabilityFolder::Kind::Refused;
     const bool folderMap = state_ && state_->kind == StabilityFolder::Kind::Map;
-    startButton_->setEnabled(!isRunning && !folder_.isEmpty() && state_ && !refused &&
-                             (!choice_.isEmpty() || folderMap));
-    stopButton_->setEnabled(isRunning && !command_->stopping());
+    row_.start->setEnabled(!isRunning && !folder_.isEmpty() && state_ && !refused &&
+                           (!choice_.isEmpty() || folderMap));
+    row_.stop->setEnabled(isRunning && !command_->stopping());
     folderButton_->setEnabled(!isRunning);
     preset_->setEnabled(!isRunning);
 }
@@ -613,20 +561,8 @@ void StabilityView::updateProgressText() {
     const int total = folderMap ? int(state_->cells.size())
                                 : (choice_.isEmpty() ? 0 : int(stabilityCells(choiceSpec_).size()));
     const int done = folderMap ? state_->finishedCount() : 0;
-    bar_->setRange(0, std::max(1, total));
-    bar_->setValue(done);
-    QString text = tr("%1 of %2 cells finished").arg(done).arg(total);
-    if (running()) {
-        const double elapsed = double(sinceStart_.elapsed()) / 1000.0;
-        const int doneHere = done - finishedAtStart_;
-        const double eta = doneHere > 0 ? elapsed / doneHere * (total - done) : -1.0;
-        text += tr(" · running %1 · ETA %2").arg(formatDuration(elapsed), formatDuration(eta));
-        const QString own = stabilityLogProgress(command_->logPath());
-        if (!own.isEmpty()) {
-            text += QStringLiteral(" · ") + own;
-        }
-    }
-    progressText_->setText(text);
+    row_.show(done, total, running(),
+              running() ? stabilityLogProgress(command_->logPath()) : QString());
 }
 
 void StabilityView::showSquare(QPoint square) {

@@ -14,13 +14,12 @@
 #include <optional>
 #include <vector>
 
-#include <QElapsedTimer>
 #include <QPoint>
-#include <QThread>
 #include <QTimer>
 #include <QWidget>
 
 #include "grainlab/ui/stability_figures.h"
+#include "gui/folder_command.h"
 #include "gui/stability_scan.h"
 
 class QComboBox;
@@ -93,10 +92,10 @@ public:
     QComboBox* xAxisBox() const { return xAxis_; }
     QComboBox* yAxisBox() const { return yAxis_; }
     QComboBox* valueBox() const { return value_; }
-    QProgressBar* progressBar() const { return bar_; }
-    QLabel* progressLabel() const { return progressText_; }
-    QPushButton* startButton() const { return startButton_; }
-    QPushButton* stopButton() const { return stopButton_; }
+    QProgressBar* progressBar() const { return row_.bar; }
+    QLabel* progressLabel() const { return row_.text; }
+    QPushButton* startButton() const { return row_.start; }
+    QPushButton* stopButton() const { return row_.stop; }
     QLabel* statusLabel() const { return status_; }
 
 signals:
@@ -129,29 +128,19 @@ private:
     bool folderIsDefault_ = false; ///< the folder follows the preset chosen
     bool adoptFolderMap_ = false;  ///< the next scan that finds a map makes it the choice
     std::shared_ptr<const StabilityFolder> state_;
-    std::uint64_t generation_ = 0; ///< bumped when the folder changes: stale scans drop
-    bool scanning_ = false;
-    bool rescanWanted_ = false;
     QPoint selected_{-1, -1};   ///< the square clicked last
     int lastX_ = 0, lastY_ = 3; ///< the axes' combo indices before the latest change
 
     CommandProcess* command_; ///< the `grainlab stability` process, its output into a log file
     std::optional<int> lastExit_;
-    QElapsedTimer sinceStart_;
-    int finishedAtStart_ = 0;
-
-    QThread worker_;
-    QObject* workerContext_; ///< lives on worker_: the context of the scans posted there
+    CommandRow row_;      ///< Start, Stop, the cells finished and the ETA
+    FolderScanner scans_; ///< forgotten when the folder changes
     QTimer poll_;
 
     QComboBox* preset_;
     QLabel* presetLabel_;
     QLabel* folderLabel_;
     QPushButton* folderButton_;
-    QPushButton* startButton_;
-    QPushButton* stopButton_;
-    QProgressBar* bar_;
-    QLabel* progressText_;
     QComboBox* xAxis_;
     QComboBox* yAxis_;
     QComboBox* value_;

@@ -19,6 +19,7 @@
 #include <QToolTip>
 #include <QVBoxLayout>
 
+#include "common/resources.h"
 #include "grainlab/study_file.h"
 #include "grainlab/ui/plot_view.h"
 #include "grainlab/ui/study_figures.h"
@@ -26,7 +27,6 @@
 #include "gui/duration_text.h"
 #include "gui/stability_view.h"
 #include "gui/ui_text.h"
-#include "common/resources.h"
 
 namespace grainlab::ui {
 namespace {
@@ -65,7 +65,10 @@ void setItems(QComboBox* box, const QStringList& items) {
 StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     : QWidget(parent, Qt::Window),
       grainlab_(grainlab.isEmpty() ? QCoreApplication::applicationFilePath() : grainlab),
-      command_(new CommandProcess(this)), workerContext_(new QObject) {
+      command_(new CommandProcess(this)),
+      row_(tr("Run the study (grainlab study FILE --out FOLDER); a stopped study continues "
+              "where it stopped"),
+           tr("Stop the study: its runs write checkpoints; Start continues"), tr("runs")) {
     setWindowTitle(tr("GrainLab — Study"));
     connect(command_, &CommandProcess::ended, this,
             [this](int code, const QString&, const QString& startError) {
@@ -74,8 +77,6 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
                 }
                 processEnded(code);
             });
-    workerContext_->moveToThread(&worker_);
-    worker_.start();
     poll_.setInterval(kPollMs);
     connect(&poll_, &QTimer::timeout, this, [this] {
         rescan();
@@ -106,28 +107,13 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     files->addWidget(folderHint, 2, 1, 1, 2);
     files->setColumnStretch(1, 1);
 
-    startButton_ = new QPushButton(tr("Start"));
-    startButton_->setToolTip(tr("Run the study (grainlab study FILE --out FOLDER); a stopped "
-                                "study continues where it stopped"));
-    connect(startButton_, &QPushButton::clicked, this, [this] {
+    connect(row_.start, &QPushButton::clicked, this, [this] {
         QString error;
         if (!start(&error)) {
             status_->setText(error);
         }
     });
-    stopButton_ = new QPushButton(tr("Stop"));
-    stopButton_->setToolTip(tr("Stop the study: its runs write checkpoints; Start continues"));
-    connect(stopButton_, &QPushButton::clicked, this, &StudyWindow::stop);
-    bar_ = new QProgressBar;
-    bar_->setFormat(tr("%v / %m runs"));
-    bar_->setRange(0, 1);
-    bar_->setValue(0);
-    progressText_ = new QLabel;
-    auto* runRow = new QHBoxLayout;
-    runRow->addWidget(startButton_);
-    runRow->addWidget(stopButton_);
-    runRow->addWidget(bar_, 1);
-    runRow->addWidget(progressText_);
+    connect(row_.stop, &QPushButton::clicked, this, &StudyWindow::stop);
 
     test_ = new QComboBox;
     test_->setToolTip(tr("The shear test (confining pressure) charted"));
@@ -170,7 +156,7 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     auto* studyTab = new QWidget;
     auto* layout = new QVBoxLayout(studyTab);
     layout->addLayout(files);
-    layout->addLayout(runRow);
+    layout->addLayout(row_.layout);
     layout->addLayout(chartRow);
     layout->addLayout(centre, 1);
     layout->addWidget(status_);
@@ -188,9 +174,6 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
 
 StudyWindow::~StudyWindow() {
     poll_.stop();
-    worker_.quit();
-    worker_.wait();
-    delete workerContext_;
     // A running study goes on without the window (its output goes to a file, not to us).
 }
 
@@ -264,7 +247,7 @@ void StudyWindow::setStudyFolder(const QString& folder) {
     }
     folder_ = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
     folderLabel_->setText(folder_);
-    ++generation_;
+    scans_.forget();
     progress_.reset();
     lastExit_.reset();
     redraw();
@@ -278,12 +261,7 @@ bool StudyWindow::running() const {
 }
 
 bool StudyWindow::start(QString* error) {
-    const auto fail = [error](const QString& message) {
-        if (error) {
-            *error = message;
-        }
-        return false;
-    };
+    const auto fail = [error](const QString& message) { return refuseStart(error, message); };
     if (!haveStudy_) {
         return fail(tr("Open a study file first."));
     }
@@ -297,8 +275,7 @@ bool StudyWindow::start(QString* error) {
                                               .arg(q(spec_.name))
                                               .arg(QCoreApplication::applicationPid()));
     lastExit_.reset();
-    finishedAtStart_ = progress_ ? progress_->finishedCount() : 0;
-    sinceStart_.start();
+    row_.started(progress_ ? progress_->finishedCount() : 0);
     status_->setText(tr("Running: %1 study %2 --out %3").arg(grainlab_, studyFile_, folder_));
     command_->start(grainlab_,
                     {QStringLiteral("study"), studyFile_, QStringLiteral("--out"), folder_},
@@ -312,25 +289,18 @@ bool StudyWindow::start(QString* error) {
 void StudyWindow::stop() {
     if (command_->stop()) {
         status_->setText(tr("Stopping: the runs write their checkpoints…"));
-        stopButton_->setEnabled(false);
+        row_.stop->setEnabled(false);
     }
 }
 
 void StudyWindow::processEnded(int exitStatus) {
     poll_.stop();
     lastExit_ = exitStatus;
-    if (exitStatus == 0) {
-        status_->setText(tr("The study finished. %1").arg(logTail()));
-    } else if (exitStatus == 130 || command_->stopping()) {
-        // 130: the study stopped its runs; another status after Stop: stopped before it had
-        // started any (Ctrl-C while it was still preparing its folder).
-        status_->setText(tr("Stopped: the runs wrote checkpoints; Start continues the study."));
-    } else if (status_->text().startsWith(tr("Could not start"))) {
-        // said already
-    } else {
-        status_->setText(
-            tr("The study failed (exit status %1): %2").arg(exitStatus).arg(logTail()));
-    }
+    const QString said = logTail();
+    status_->setText(commandEndedText(
+        exitStatus, command_->stopping(), status_->text(), tr("The study finished. %1").arg(said),
+        tr("Stopped: the runs wrote checkpoints; Start continues the study."),
+        tr("The study failed (exit status %1): ") + said));
     rescan();
     updateControls();
     updateProgressText();
@@ -358,42 +328,20 @@ void StudyWindow::rescan() {
     if (!haveStudy_ || folder_.isEmpty()) {
         return;
     }
-    if (scanning_) {
-        rescanWanted_ = true;
-        return;
-    }
-    scanning_ = true;
     // Everything the scan needs is copied in: the worker never touches the window.
-    QMetaObject::invokeMethod(
-        workerContext_,
-        [this, generation = generation_, folder = folder_.toStdString(), spec = spec_, plan = plan_,
-         previous = progress_] {
-            std::shared_ptr<const StudyProgress> next;
-            QString error;
-            try {
-                next = scanStudyFolder(folder, spec, plan, previous);
-            } catch (const std::exception& e) {
-                error = QString::fromStdString(e.what());
-            }
-            QMetaObject::invokeMethod(
-                this,
-                [this, generation, next, error] {
-                    scanning_ = false;
-                    if (generation == generation_) {
-                        if (next) {
-                            scanned(next);
-                        } else {
-                            status_->setText(error);
-                        }
-                    }
-                    if (rescanWanted_) {
-                        rescanWanted_ = false;
-                        rescan();
-                    }
-                },
-                Qt::QueuedConnection);
+    scans_.request<StudyProgress>(
+        this,
+        [folder = folder_.toStdString(), spec = spec_, plan = plan_, previous = progress_] {
+            return scanStudyFolder(folder, spec, plan, previous);
         },
-        Qt::QueuedConnection);
+        [this](std::shared_ptr<const StudyProgress> next, const QString& error) {
+            if (next) {
+                scanned(std::move(next));
+            } else {
+                status_->setText(error);
+            }
+        },
+        [this] { rescan(); });
 }
 
 void StudyWindow::scanned(std::shared_ptr<const StudyProgress> progress) {
@@ -450,8 +398,8 @@ void StudyWindow::redraw() {
 
 void StudyWindow::updateControls() {
     const bool isRunning = running();
-    startButton_->setEnabled(haveStudy_ && !isRunning);
-    stopButton_->setEnabled(isRunning);
+    row_.start->setEnabled(haveStudy_ && !isRunning);
+    row_.stop->setEnabled(isRunning);
     folderButton_->setEnabled(haveStudy_ && !isRunning);
     export_->setEnabled(progress_ && !progress_->results.empty());
     recommended_->setEnabled(!folder_.isEmpty() &&
@@ -459,18 +407,7 @@ void StudyWindow::updateControls() {
 }
 
 void StudyWindow::updateProgressText() {
-    const int total = int(plan_.runs.size());
-    const int done = progress_ ? progress_->finishedCount() : 0;
-    bar_->setRange(0, std::max(1, total));
-    bar_->setValue(done);
-    QString text = tr("%1 of %2 runs finished").arg(done).arg(total);
-    if (running()) {
-        const double elapsed = double(sinceStart_.elapsed()) / 1000.0;
-        const int doneHere = done - finishedAtStart_;
-        const double eta = doneHere > 0 ? elapsed / doneHere * (total - done) : -1.0;
-        text += tr(" · running %1 · ETA %2").arg(formatDuration(elapsed), formatDuration(eta));
-    }
-    progressText_->setText(text);
+    row_.show(progress_ ? progress_->finishedCount() : 0, int(plan_.runs.size()), running());
 }
 
 int StudyWindow::settingOfPoint(int point) const {

@@ -14,12 +14,11 @@
 #include <memory>
 #include <optional>
 
-#include <QElapsedTimer>
-#include <QThread>
 #include <QTimer>
 #include <QWidget>
 
 #include "grainlab/study_plan.h"
+#include "gui/folder_command.h"
 #include "gui/study_scan.h"
 
 class QComboBox;
@@ -82,9 +81,9 @@ public:
     QLabel* details() const { return details_; }
     QComboBox* testBox() const { return test_; }
     QComboBox* metricBox() const { return metric_; }
-    QProgressBar* progressBar() const { return bar_; }
-    QPushButton* startButton() const { return startButton_; }
-    QPushButton* stopButton() const { return stopButton_; }
+    QProgressBar* progressBar() const { return row_.bar; }
+    QPushButton* startButton() const { return row_.start; }
+    QPushButton* stopButton() const { return row_.stop; }
     QPushButton* recommendedButton() const { return recommended_; }
     QLabel* statusLabel() const { return status_; }
     /// The Stability tab.
@@ -124,26 +123,16 @@ private:
     StudyPlan plan_;
     bool haveStudy_ = false;
     std::shared_ptr<const StudyProgress> progress_;
-    std::uint64_t generation_ = 0; ///< bumped when the study or folder changes: stale scans drop
-    bool scanning_ = false;
-    bool rescanWanted_ = false;
 
     CommandProcess* command_; ///< the `grainlab study` process, its output into a log file
     std::optional<int> lastExit_;
-    QElapsedTimer sinceStart_;
-    int finishedAtStart_ = 0;
-
-    QThread worker_;
-    QObject* workerContext_; ///< lives on worker_: the context of the scans posted there
+    CommandRow row_;      ///< Start, Stop, the runs finished and the ETA
+    FolderScanner scans_; ///< forgotten when the study or the folder changes
     QTimer poll_;
 
     QLabel* fileLabel_;
     QLabel* folderLabel_;
     QPushButton* folderButton_;
-    QPushButton* startButton_;
-    QPushButton* stopButton_;
-    QProgressBar* bar_;
-    QLabel* progressText_;
     QComboBox* test_;
     QComboBox* metric_;
     PlotView* chart_;

@@ -170,6 +170,47 @@ std::string differences(const RunRecord& a, const RunRecord& b) {
     return out;
 }
 
+/// An interruption of a run: after `step` steps of its process, by `signal`.
+struct Case {
+    std::string what;
+    std::int64_t step; ///< steps of the interrupted process
+    const char* signal;
+};
+
+/// Runs `experiment` into base/caseNN for each case, stopped as the case says, resumes it with
+/// --resume, and compares the finished folder with `reference`; a folder that matches is
+/// removed. Returns the failures, one line each ("" when every case matched).
+std::string runCases(const fs::path& base, const fs::path& experiment, const RunRecord& reference,
+                     const std::vector<Case>& cases) {
+    std::string failed;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const Case& c = cases[k];
+        const fs::path out = base / fmt::format("case{:02d}", k);
+        const std::string label = fmt::format("{} ({} after {} steps)", c.what, c.signal, c.step);
+        const int first =
+            runGrainlab({"run", experiment.string(), "--out", out.string()}, c.step, c.signal);
+        if (std::string(c.signal) == "KILL") {
+            EXPECT_TRUE(WIFSIGNALED(first) && WTERMSIG(first) == SIGKILL) << label;
+        } else {
+            EXPECT_TRUE(WIFEXITED(first) && WEXITSTATUS(first) == 130) << label;
+        }
+        const int second = runGrainlab({"run", "--resume", out.string()});
+        if (!(WIFEXITED(second) && WEXITSTATUS(second) == 0)) {
+            ADD_FAILURE() << label << ": --resume failed (status " << second << ")";
+            failed += "\n  " + label + ": --resume failed";
+            continue;
+        }
+        const std::string diff = differences(reference, readRun(out));
+        if (!diff.empty()) {
+            ADD_FAILURE() << label << ": differs in" << diff;
+            failed += "\n  " + label + ":" + diff;
+        } else {
+            fs::remove_all(out);
+        }
+    }
+    return failed;
+}
+
 TEST(CrashResume, EveryInterruptionResumesToTheSameBits) {
     const fs::path base =
         fs::temp_directory_path() / fmt::format("grainlab-test-crash-{}", getpid());
@@ -213,11 +254,6 @@ TEST(CrashResume, EveryInterruptionResumesToTheSameBits) {
     // (3000 steps into the stage).
     ASSERT_GT(c50.second - c25.second, 1300) << "stage 2 too short for the kill points";
 
-    struct Case {
-        std::string what;
-        std::int64_t step; ///< steps of the interrupted process
-        const char* signal;
-    };
     const std::int64_t s25len = s25.second - s25.first, s50len = s50.second - s50.first;
     const std::vector<Case> cases = {
         {"compaction stage 1, before its first checkpoint", 1700, "KILL"},
@@ -243,32 +279,7 @@ TEST(CrashResume, EveryInterruptionResumesToTheSameBits) {
         {"shear 50 kPa, late SIGINT", test2 + s50.second - 2, "INT"},
         {"the run, at its very end", test2 + s50.second, "KILL"},
     };
-    std::string failed;
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-        const Case& c = cases[k];
-        const fs::path out = base / fmt::format("case{:02d}", k);
-        const std::string label = fmt::format("{} ({} after {} steps)", c.what, c.signal, c.step);
-        const int first =
-            runGrainlab({"run", experiment.string(), "--out", out.string()}, c.step, c.signal);
-        if (std::string(c.signal) == "KILL") {
-            EXPECT_TRUE(WIFSIGNALED(first) && WTERMSIG(first) == SIGKILL) << label;
-        } else {
-            EXPECT_TRUE(WIFEXITED(first) && WEXITSTATUS(first) == 130) << label;
-        }
-        const int second = runGrainlab({"run", "--resume", out.string()});
-        if (!(WIFEXITED(second) && WEXITSTATUS(second) == 0)) {
-            ADD_FAILURE() << label << ": --resume failed (status " << second << ")";
-            failed += "\n  " + label + ": --resume failed";
-            continue;
-        }
-        const std::string diff = differences(reference, readRun(out));
-        if (!diff.empty()) {
-            ADD_FAILURE() << label << ": differs in" << diff;
-            failed += "\n  " + label + ":" + diff;
-        } else {
-            fs::remove_all(out);
-        }
-    }
+    const std::string failed = runCases(base, experiment, reference, cases);
     if (!failed.empty()) {
         std::fprintf(stderr, "crash cases that failed:%s\n", failed.c_str());
     } else {
@@ -330,11 +341,6 @@ TEST(CrashResume, EveryTestKindResumesFromAStopInItsMiddleToTheSameBits) {
         return chainStart + s - sample;
     };
     const std::int64_t strainPoint = ext.first + 2000; // eps1 = -0.1 %
-    struct Case {
-        std::string what;
-        std::int64_t step;
-        const char* signal;
-    };
     const std::vector<Case> cases = {
         {"constant volume, mid", at(sample, (cv.first + cv.second) / 2 + 17), "KILL"},
         {"extension, before the probes' start strain", at(chain2, strainPoint - 301), "INT"},
@@ -343,32 +349,7 @@ TEST(CrashResume, EveryTestKindResumesFromAStopInItsMiddleToTheSameBits) {
         {"probes, mid", at(chain2, (probes.first + probes.second) / 2 + 5), "INT"},
         {"cyclic, mid", at(chain3, (cyclic.first + cyclic.second) / 2 + 3), "KILL"},
     };
-    std::string failed;
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-        const Case& c = cases[k];
-        const fs::path out = base / fmt::format("case{:02d}", k);
-        const std::string label = fmt::format("{} ({} after {} steps)", c.what, c.signal, c.step);
-        const int first =
-            runGrainlab({"run", experiment.string(), "--out", out.string()}, c.step, c.signal);
-        if (std::string(c.signal) == "KILL") {
-            EXPECT_TRUE(WIFSIGNALED(first) && WTERMSIG(first) == SIGKILL) << label;
-        } else {
-            EXPECT_TRUE(WIFEXITED(first) && WEXITSTATUS(first) == 130) << label;
-        }
-        const int second = runGrainlab({"run", "--resume", out.string()});
-        if (!(WIFEXITED(second) && WEXITSTATUS(second) == 0)) {
-            ADD_FAILURE() << label << ": --resume failed (status " << second << ")";
-            failed += "\n  " + label + ": --resume failed";
-            continue;
-        }
-        const std::string diff = differences(reference, readRun(out));
-        if (!diff.empty()) {
-            ADD_FAILURE() << label << ": differs in" << diff;
-            failed += "\n  " + label + ":" + diff;
-        } else {
-            fs::remove_all(out);
-        }
-    }
+    const std::string failed = runCases(base, experiment, reference, cases);
     if (failed.empty()) {
         fs::remove_all(base);
     }
