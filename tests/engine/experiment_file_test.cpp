@@ -113,6 +113,30 @@ TEST(ExperimentFile, QuickPresetParses) {
     EXPECT_GT(c.shear.targetAxialStrain, 0.0);
 }
 
+TEST(ExperimentFile, EveryShippedPresetParsesAndIsNamedAfterItsFile) {
+    int presets = 0;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(sourceFile("resources/experiments"))) {
+        if (entry.path().extension() != ".json") {
+            continue;
+        }
+        SCOPED_TRACE(entry.path().filename().string());
+        ExperimentConfig c;
+        ASSERT_NO_THROW(c = readExperimentFile(entry.path().string()));
+        EXPECT_FALSE(c.tests.empty());
+        EXPECT_EQ(c.name, entry.path().stem().string());
+        ++presets;
+    }
+    EXPECT_GE(presets, 20);
+    // The extension preset: drained in compression, then in extension, at two pressures.
+    const ExperimentConfig ext =
+        readExperimentFile(sourceFile("resources/experiments/quick-extension.json"));
+    ASSERT_EQ(ext.tests.size(), 2u);
+    EXPECT_FALSE(ext.tests[0].extension);
+    EXPECT_TRUE(ext.tests[1].extension);
+    EXPECT_EQ(ext.tests[1].kind, LoadingPath::Kind::Drained);
+}
+
 TEST(ExperimentFile, SourceTextIsVerbatim) {
     const auto path = std::filesystem::temp_directory_path() / "grainlab_verbatim_test.json";
     const std::string text = "  " + minimalExperiment().dump(4) + "\n\n";
