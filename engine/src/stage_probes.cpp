@@ -23,10 +23,9 @@ void ProbesStage::start(RunContext& ctx) {
             throw std::runtime_error(
                 fmt::format("{}: the test before the probes handed over no start state", test()));
         }
-        SimulationState from = std::move(*ctx.probeStart);
+        SimulationState state = std::move(*ctx.probeStart);
         ctx.probeStart.reset();
         ctx.probeStartKeptIn.clear();
-        SimulationState state = from;
         state.step = ctx.sim->stepCount(); // the step counter goes on
         state.parameters.threads = threadsFor(ctx.config);
         ctx.sim = std::make_unique<Simulation>(std::move(state));
