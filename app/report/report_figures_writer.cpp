@@ -13,20 +13,22 @@
 #include <fmt/format.h>
 
 #include "common/atomic_file.h"
+#include "common/run_file_view.h"
 #include "grainlab/run_file.h"
 #include "grainlab/shear_metrics.h"
 #include "grainlab/ui/colour_maps.h"
 #include "grainlab/ui/figure_export.h"
 #include "grainlab/ui/plot_painter.h"
 #include "grainlab/ui/scene_renderer.h"
-#include "common/run_file_view.h"
 #include "report/report_page.h"
 
 namespace grainlab {
 namespace fs = std::filesystem;
 namespace {
 
-QString q(const std::string& s) { return QString::fromStdString(s); }
+QString q(const std::string& s) {
+    return QString::fromStdString(s);
+}
 
 /// A copy of `v` with every value times `scale`.
 std::vector<double> scaled(std::vector<double> v, double scale) {
@@ -36,8 +38,10 @@ std::vector<double> scaled(std::vector<double> v, double scale) {
     return v;
 }
 
+} // namespace
+
 /// The figure drawn in its axes' units (ReportFigure::xScale, yScale: ε1 in percent, q in kPa).
-ui::PlotPainter plotOf(const ReportFigure& f) {
+ui::PlotPainter reportPlot(const ReportFigure& f) {
     ui::PlotPainter plot;
     plot.title = q(f.title);
     plot.xAxis.title = q(f.xLabel);
@@ -47,6 +51,11 @@ ui::PlotPainter plotOf(const ReportFigure& f) {
     bool any = false;
     for (const ReportLine& line : f.lines) {
         const QColor c = ui::categoryColour(colour++);
+        for (double x : line.x) { // the fit spans the points and the curves alike
+            lo = any ? std::min(lo, x) : x;
+            hi = any ? std::max(hi, x) : x;
+            any = true;
+        }
         if (line.points) {
             for (std::size_t k = 0; k < line.x.size(); ++k) {
                 ui::PlotPoint p;
@@ -68,11 +77,6 @@ ui::PlotPainter plotOf(const ReportFigure& f) {
         curve.label = q(line.label);
         curve.colour = c;
         plot.curves.push_back(std::move(curve));
-        for (double x : line.x) {
-            lo = any ? std::min(lo, x) : x;
-            hi = any ? std::max(hi, x) : x;
-            any = true;
-        }
     }
     if (f.fit && any) {
         ui::PlotCurve fit;
@@ -86,6 +90,8 @@ ui::PlotPainter plotOf(const ReportFigure& f) {
     }
     return plot;
 }
+
+namespace {
 
 bool save(const QString& folder, const QString& name, QSize size,
           const std::function<void(QPainter&, QSize)>& paint, QString* error) {
@@ -139,8 +145,9 @@ bool writeVoidCellPictures(const QString& folder, const std::vector<ReportFigure
         renderer.setSnapshot(snapshot);
         const QSize size(1000, 1000);
         renderer.fitToCell(size);
-        if (!save(folder, q(stem), size, [&](QPainter& p, QSize s) { renderer.render(p, s); },
-                  error)) {
+        if (!save(
+                folder, q(stem), size, [&](QPainter& p, QSize s) { renderer.render(p, s); },
+                error)) {
             return false;
         }
         std::string csv = "valence [-],area [m^2],centroid1 [m],centroid2 [m]\n";
@@ -166,10 +173,10 @@ std::string writeReportFiguresHeadless(const std::string& folder,
         return folder + ": cannot create the folder";
     }
     for (const ReportFigure& f : figures) {
-        const ui::PlotPainter plot = plotOf(f);
-        if (!save(dir, q(f.name), QSize(1000, 700),
-                  [&](QPainter& p, QSize s) { plot.paint(p, QRectF(QPointF(0, 0), s)); },
-                  &error)) {
+        const ui::PlotPainter plot = reportPlot(f);
+        if (!save(
+                dir, q(f.name), QSize(1000, 700),
+                [&](QPainter& p, QSize s) { plot.paint(p, QRectF(QPointF(0, 0), s)); }, &error)) {
             return error.toStdString();
         }
     }

@@ -12,7 +12,15 @@
 #include "grainlab/report_data.h"
 #include "report/report_command.h"
 
+namespace grainlab::ui {
+class PlotPainter;
+} // namespace grainlab::ui
+
 namespace grainlab {
+
+/// The plot of one report figure: its lines (curves, or points with error bars) and its fit,
+/// drawn from the smallest to the largest x of its lines.
+ui::PlotPainter reportPlot(const ReportFigure& f);
 
 std::string writeReportFiguresHeadless(const std::string& folder,
                                        const std::vector<ReportFigure>& figures,
