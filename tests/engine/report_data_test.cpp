@@ -57,17 +57,17 @@ std::vector<ReportRun> twoRuns() {
         run.name = "seed" + std::to_string(seed + 1);
         for (int t = 0; t < 2; ++t) {
             const double slope = (t == 0 ? 4.0 : 2.0) * (seed == 0 ? 1.0 : 1.5);
-            run.tests.push_back(shearTest(
-                t == 0 ? "p015kPa" : "p100kPa", 0.12 + 0.01 * seed, 60,
-                [&](test::SeriesBuilder& b, std::vector<double>& r, double eps1) {
-                    b.at(r, "q_over_p") = slope * eps1;
-                    b.at(r, "phi_deg") = 10.0 * slope * eps1;
-                    b.at(r, "epsv") = -0.2 * eps1;
-                    b.at(r, "Nv_over_Nvi") = 1.0 + eps1;
-                    b.at(r, "Z_eff") = 3.0 * (1.0 + eps1) + 2.0;
-                    b.at(r, "Z") = 3.0 * (1.0 + eps1) + 1.5;
-                    b.at(r, "I_uf") = 0.1 + 0.1 * seed;
-                }));
+            run.tests.push_back(
+                shearTest(t == 0 ? "p015kPa" : "p100kPa", 0.12 + 0.01 * seed, 60,
+                          [&](test::SeriesBuilder& b, std::vector<double>& r, double eps1) {
+                              b.at(r, "q_over_p") = slope * eps1;
+                              b.at(r, "phi_deg") = 10.0 * slope * eps1;
+                              b.at(r, "epsv") = -0.2 * eps1;
+                              b.at(r, "Nv_over_Nvi") = 1.0 + eps1;
+                              b.at(r, "Z_eff") = 3.0 * (1.0 + eps1) + 2.0;
+                              b.at(r, "Z") = 3.0 * (1.0 + eps1) + 1.5;
+                              b.at(r, "I_uf") = 0.1 + 0.1 * seed;
+                          }));
             run.pressures.push_back(t == 0 ? 15e3 : 100e3);
         }
         runs.push_back(std::move(run));
@@ -76,8 +76,8 @@ std::vector<ReportRun> twoRuns() {
 }
 
 TEST(FitLine, RecoversAnExactLineAndMatchesTheNormalEquations) {
-    const auto exact = fitLine({1, 2, 3, 4}, {3.45 * 1 + 2.1, 3.45 * 2 + 2.1, 3.45 * 3 + 2.1,
-                                              3.45 * 4 + 2.1});
+    const auto exact =
+        fitLine({1, 2, 3, 4}, {3.45 * 1 + 2.1, 3.45 * 2 + 2.1, 3.45 * 3 + 2.1, 3.45 * 4 + 2.1});
     ASSERT_TRUE(exact);
     EXPECT_NEAR(exact->slope, 3.45, 1e-12);
     EXPECT_NEAR(exact->intercept, 2.1, 1e-12);
@@ -107,6 +107,34 @@ TEST(ReportFigures, CurvesAreTheMeanOverRunsWithTheirStandardDeviation) {
         EXPECT_EQ(low.runs[k], 2);
     }
     EXPECT_DOUBLE_EQ(low.x.back(), 0.12);
+}
+
+TEST(ReportFigures, ATestInExtensionIsDrawnAgainstItsNegativeStrain) {
+    // Two runs of a test in extension: eps1 from 0 down to -0.12, q/p = a eps1 (a = 4 and 6).
+    std::vector<ReportRun> runs;
+    for (double a : {4.0, 6.0}) {
+        ReportRun run;
+        run.name = "a" + std::to_string(int(a));
+        SeriesTable t = shearTest("p015kPa-extension", 0.12, 60,
+                                  [&](test::SeriesBuilder& b, std::vector<double>& r, double e) {
+                                      b.at(r, "eps1") = -e;
+                                      b.at(r, "q_over_p") = -a * e;
+                                  });
+        run.tests.push_back(std::move(t));
+        run.pressures.push_back(15e3);
+        runs.push_back(std::move(run));
+    }
+    const std::vector<ReportFigure> figures = reportFigures(runs);
+    const ReportFigure& qp = figure(figures, "01_q_over_p");
+    ASSERT_EQ(qp.lines.size(), 1u);
+    const ReportLine& line = qp.lines[0];
+    ASSERT_GE(line.x.size(), 10u) << "the extension test is missing from the strain figure";
+    EXPECT_DOUBLE_EQ(line.x.front(), -0.12);
+    EXPECT_DOUBLE_EQ(line.x.back(), 0.0);
+    for (std::size_t k = 0; k < line.x.size(); ++k) {
+        EXPECT_NEAR(line.y[k], 5.0 * line.x[k], 1e-12); // the mean of 4 eps1 and 6 eps1
+        EXPECT_EQ(line.runs[k], 2);
+    }
 }
 
 TEST(ReportFigures, AxesAreLabelledAsAPaperWouldWithTheDataInStoredUnits) {
@@ -209,8 +237,8 @@ TEST(HeadlineTable, NumbersCarryTheirScatterAndFaceThePublishedValues) {
 /// A test of kind `kind` ("shear", "constant_volume") from eps1 = 0 to 0.12 in 60 records: p, q,
 /// e and eps_v ramp to (pEnd, qEnd, eEnd, -0.02) by eps1 = 0.04 and stay there, or, with
 /// `hardening`, q keeps growing by 5 p per unit eps1.
-SeriesTable endingTest(const std::string& name, const std::string& kind, double pEnd,
-                       double qEnd, double eEnd, bool hardening = false) {
+SeriesTable endingTest(const std::string& name, const std::string& kind, double pEnd, double qEnd,
+                       double eEnd, bool hardening = false) {
     test::SeriesBuilder b(name);
     for (int k = 0; k <= 60; ++k) {
         const double eps1 = 0.12 * k / 60;
@@ -250,8 +278,8 @@ TEST(CriticalStateOfRuns, MAndTheLineComeFromTheSteadyEndsOnly) {
         add("p015kPa-constant-volume", "constant_volume", 15e3, 40e3 + 1e3 * s, 0.53 + 0.02 * s,
             0.18, false);
         add("p100kPa", "shear", 100e3, 100e3, 0.3, 0.17, true);
-        add("p100kPa-constant-volume", "constant_volume", 100e3, 250e3 + 5e3 * s,
-            0.56 - 0.01 * s, 0.15 - 0.001 * s, false);
+        add("p100kPa-constant-volume", "constant_volume", 100e3, 250e3 + 5e3 * s, 0.56 - 0.01 * s,
+            0.15 - 0.001 * s, false);
         runs.push_back(std::move(run));
     }
     const CriticalStateSummary cs = criticalStateOf(runs);
@@ -262,8 +290,8 @@ TEST(CriticalStateOfRuns, MAndTheLineComeFromTheSteadyEndsOnly) {
         if (end.test == "p100kPa") {
             EXPECT_NE(end.steady.reason.find("dq/deps1"), std::string::npos) << end.steady.reason;
         }
-        EXPECT_EQ(end.kind, end.test.find("constant") == std::string::npos ? "shear"
-                                                                           : "constant_volume");
+        EXPECT_EQ(end.kind,
+                  end.test.find("constant") == std::string::npos ? "shear" : "constant_volume");
     }
     // M by hand: mean and sample standard deviation of the steady ends' q/p.
     const auto meanSd = [](const std::vector<double>& v) {
@@ -400,8 +428,8 @@ TEST(ReportFigures, AProbeSetDrawsItsResponseEnvelopeLessTheDrift) {
     const auto figures = reportFigures(runs);
     const ReportFigure& f = figure(figures, "11_p025kPa-probes_envelope");
     ASSERT_EQ(f.lines.size(), 1u);
-    ASSERT_EQ(f.lines[0].x.size(), 9u); // closed
-    EXPECT_NEAR(f.lines[0].x[0], 2e3, 1e-9);  // u_0 = (1, 0): the drift taken off
+    ASSERT_EQ(f.lines[0].x.size(), 9u);      // closed
+    EXPECT_NEAR(f.lines[0].x[0], 2e3, 1e-9); // u_0 = (1, 0): the drift taken off
     EXPECT_NEAR(f.lines[0].y[0], 500, 1e-9);
     EXPECT_EQ(f.lines[0].x.back(), f.lines[0].x.front());
     EXPECT_NE(f.note.find("asymmetry"), std::string::npos) << f.note;

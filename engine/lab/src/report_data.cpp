@@ -60,12 +60,17 @@ std::vector<std::pair<const SeriesTable*, double>> tablesOf(const std::vector<Re
     return out;
 }
 
-/// Each run's curve of `column` against eps1 for test `test` (runs without it left out).
+/// Each run's curve of `column` against eps1 for test `test` (runs without it left out), in
+/// increasing eps1: a test in extension (eps1 falling from 0) is read from its end.
 std::vector<Curve> curvesOf(const std::vector<ReportRun>& runs, const std::string& test,
                             const std::string& column) {
     std::vector<Curve> curves;
     for (const auto& [table, pressure] : tablesOf(runs, test)) {
         Curve c = shearCurve(*table, column);
+        if (c.x.size() > 1 && c.x.back() < c.x.front()) {
+            std::reverse(c.x.begin(), c.x.end());
+            std::reverse(c.y.begin(), c.y.end());
+        }
         if (!c.x.empty()) {
             curves.push_back(std::move(c));
         }
