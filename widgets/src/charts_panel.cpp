@@ -16,162 +16,123 @@
 #include <QVBoxLayout>
 #include <QValueAxis>
 
-#include "grainlab/ui/colour_maps.h"
-#include "grainlab/ui/figure_export.h"
 #include "grainlab/path_measures.h"
 #include "grainlab/report_data.h"
 #include "grainlab/shear_metrics.h"
+#include "grainlab/ui/colour_maps.h"
+#include "grainlab/ui/figure_export.h"
 
 namespace grainlab::ui {
 
+namespace {
+
+ChartCurve solid(const char* column, const QString& label, double scale = 1.0) {
+    return {column, label, scale, Qt::SolidLine};
+}
+
+/// A chart against ε1 in percent, on the shear tests' page.
+ChartDefinition strainChart(const char* name, const QString& title, const QString& yLabel,
+                            std::vector<ChartCurve> curves) {
+    ChartDefinition chart;
+    chart.name = QString::fromLatin1(name);
+    chart.title = title;
+    chart.xColumn = "eps1";
+    chart.xLabel = QStringLiteral("ε1 [%]");
+    chart.xScale = 100.0;
+    chart.yLabel = yLabel;
+    chart.curves = std::move(curves);
+    return chart;
+}
+
+/// A chart of one column against another.
+ChartDefinition columnChart(const char* name, const QString& title, const char* xColumn,
+                            const QString& xLabel, double xScale, const QString& yLabel,
+                            ChartCurve curve) {
+    ChartDefinition chart = strainChart(name, title, yLabel, {std::move(curve)});
+    chart.xColumn = xColumn;
+    chart.xLabel = xLabel;
+    chart.xScale = xScale;
+    return chart;
+}
+
+/// A chart of the stress-paths page.
+ChartDefinition pathChart(ChartDefinition chart) {
+    chart.page = QObject::tr("Stress paths");
+    return chart;
+}
+
+/// A compaction chart: one column against the step.
+ChartDefinition compactionChart(const char* name, const QString& title, const char* column,
+                                const QString& label, const QString& yLabel, double scale) {
+    ChartDefinition chart = columnChart(name, title, "step", QStringLiteral("step"), 1.0, yLabel,
+                                        solid(column, label, scale));
+    chart.stage = StageKind::Compaction;
+    chart.page = QObject::tr("Compaction");
+    return chart;
+}
+
+} // namespace
+
 std::vector<ChartDefinition> defaultChartDefinitions() {
-    const QString eps1 = QStringLiteral("ε1 [%]");
-    const QString compaction = QObject::tr("Compaction");
-    const QString paths = QObject::tr("Stress paths");
-    return {
-        {"q_over_p",
-         QObject::tr("Stress ratio"),
-         "eps1",
-         eps1,
-         100.0,
-         QStringLiteral("q/p [-]"),
-         {{"q_over_p", QStringLiteral("q/p"), 1.0, Qt::SolidLine}}},
-        {"epsv",
-         QObject::tr("Volumetric strain (dilation negative)"),
-         "eps1",
-         eps1,
-         100.0,
-         QStringLiteral("εv [%]"),
-         {{"epsv", QStringLiteral("εv"), 100.0, Qt::SolidLine}}},
-        {"fabric",
-         QObject::tr("Fabric: all —, strong - -, weak ···"),
-         "eps1",
-         eps1,
-         100.0,
-         QStringLiteral("H11 − H22 [-]"),
-         {{"Hdev", QStringLiteral("all"), 1.0, Qt::SolidLine},
-          {"Hsdev", QStringLiteral("strong"), 1.0, Qt::DashLine},
-          {"Hwdev", QStringLiteral("weak"), 1.0, Qt::DotLine}}},
-        {"coordination",
-         QObject::tr("Z —, Z̄ - -, sliding S ···"),
-         "eps1",
-         eps1,
-         100.0,
-         QStringLiteral("Z, Z̄, S [-]"),
-         {{"Z", QStringLiteral("Z"), 1.0, Qt::SolidLine},
-          {"Z_eff", QStringLiteral("Z̄"), 1.0, Qt::DashLine},
-          {"S", QStringLiteral("S"), 1.0, Qt::DotLine}}},
-        {"void_cells",
-         QObject::tr("Void cells"),
-         "eps1",
-         eps1,
-         100.0,
-         QStringLiteral("N_v / N_vi [-]"),
-         {{"Nv_over_Nvi", QStringLiteral("N_v/N_vi"), 1.0, Qt::SolidLine}}},
-        {"z_eff_vs_void_cells",
-         QObject::tr("Z̄ against void cells"),
-         "Nv_over_Nvi",
-         QStringLiteral("N_v / N_vi [-]"),
-         1.0,
-         QStringLiteral("Z̄ [-]"),
-         {{"Z_eff", QStringLiteral("Z̄"), 1.0, Qt::SolidLine}}},
-        {"q_vs_p",
-         QObject::tr("Stress path: q against p′ (critical state - -)"),
-         "p",
-         QStringLiteral("p′ [kPa]"),
-         1e-3,
-         QStringLiteral("q [kPa]"),
-         {{"q", QStringLiteral("q"), 1e-3, Qt::SolidLine}},
-         StageKind::Shear,
-         paths,
-         false,
-         ChartDefinition::Derived::None,
-         false,
-         ChartDefinition::CriticalState::StressRatio},
-        {"q_vs_eps1",
-         QObject::tr("Deviator stress (a cyclic test's loops, its live cycle bold)"),
-         "eps1",
-         eps1,
-         100.0,
-         QStringLiteral("q [kPa]"),
-         {{"q", QStringLiteral("q"), 1e-3, Qt::SolidLine}},
-         StageKind::Shear,
-         paths,
-         false,
-         ChartDefinition::Derived::None,
-         true},
-        {"e_vs_ln_p",
-         QObject::tr("Void ratio against ln p′ (critical state line - -)"),
-         "p",
-         QStringLiteral("ln(p′ / 1 Pa)"),
-         1.0,
-         QStringLiteral("e [-]"),
-         {{"e", QStringLiteral("e"), 1.0, Qt::SolidLine}},
-         StageKind::Shear,
-         paths,
-         true,
-         ChartDefinition::Derived::None,
-         false,
-         ChartDefinition::CriticalState::VoidRatio},
-        {"p_per_cycle",
-         QObject::tr("Cyclic tests: mean stress at the end of each cycle"),
-         "cycle",
-         QStringLiteral("cycle"),
-         1.0,
-         QStringLiteral("p′/p0 [-]"),
-         {{"p_over_p0", QStringLiteral("p′/p0"), 1.0, Qt::SolidLine}},
-         StageKind::Shear,
-         paths,
-         false,
-         ChartDefinition::Derived::PressurePerCycle},
-        {"probe_envelope",
-         QObject::tr("Stress probes: response envelope"),
-         "d_sigma11",
-         QStringLiteral("Δσ11 [kPa]"),
-         1e-3,
-         QStringLiteral("Δσ22 [kPa]"),
-         {{"d_sigma22", QStringLiteral("Δσ22"), 1e-3, Qt::SolidLine}},
-         StageKind::Shear,
-         paths,
-         false,
-         ChartDefinition::Derived::ProbeEnvelope},
-        {"compaction_p",
-         QObject::tr("Compaction: mean stress"),
-         "step",
-         QStringLiteral("step"),
-         1.0,
-         QStringLiteral("p [kPa]"),
-         {{"p", QStringLiteral("p"), 1e-3, Qt::SolidLine}},
-         StageKind::Compaction,
-         compaction},
-        {"compaction_e",
-         QObject::tr("Compaction: void ratio"),
-         "step",
-         QStringLiteral("step"),
-         1.0,
-         QStringLiteral("e [-]"),
-         {{"e", QStringLiteral("e"), 1.0, Qt::SolidLine}},
-         StageKind::Compaction,
-         compaction},
-        {"compaction_Z",
-         QObject::tr("Compaction: coordination"),
-         "step",
-         QStringLiteral("step"),
-         1.0,
-         QStringLiteral("Z [-]"),
-         {{"Z", QStringLiteral("Z"), 1.0, Qt::SolidLine}},
-         StageKind::Compaction,
-         compaction},
-        {"compaction_I_uf",
-         QObject::tr("Compaction: unbalanced force"),
-         "step",
-         QStringLiteral("step"),
-         1.0,
-         QStringLiteral("I_uf [%]"),
-         {{"I_uf", QStringLiteral("I_uf"), 1.0, Qt::SolidLine}},
-         StageKind::Compaction,
-         compaction},
+    const QString voidCells = QStringLiteral("N_v / N_vi [-]");
+    std::vector<ChartDefinition> charts{
+        strainChart("q_over_p", QObject::tr("Stress ratio"), QStringLiteral("q/p [-]"),
+                    {solid("q_over_p", QStringLiteral("q/p"))}),
+        strainChart("epsv", QObject::tr("Volumetric strain (dilation negative)"),
+                    QStringLiteral("εv [%]"), {solid("epsv", QStringLiteral("εv"), 100.0)}),
+        strainChart("fabric", QObject::tr("Fabric: all —, strong - -, weak ···"),
+                    QStringLiteral("H11 − H22 [-]"),
+                    {solid("Hdev", QStringLiteral("all")),
+                     {"Hsdev", QStringLiteral("strong"), 1.0, Qt::DashLine},
+                     {"Hwdev", QStringLiteral("weak"), 1.0, Qt::DotLine}}),
+        strainChart("coordination", QObject::tr("Z —, Z̄ - -, sliding S ···"),
+                    QStringLiteral("Z, Z̄, S [-]"),
+                    {solid("Z", QStringLiteral("Z")),
+                     {"Z_eff", QStringLiteral("Z̄"), 1.0, Qt::DashLine},
+                     {"S", QStringLiteral("S"), 1.0, Qt::DotLine}}),
+        strainChart("void_cells", QObject::tr("Void cells"), voidCells,
+                    {solid("Nv_over_Nvi", QStringLiteral("N_v/N_vi"))}),
+        columnChart("z_eff_vs_void_cells", QObject::tr("Z̄ against void cells"), "Nv_over_Nvi",
+                    voidCells, 1.0, QStringLiteral("Z̄ [-]"), solid("Z_eff", QStringLiteral("Z̄"))),
     };
+    ChartDefinition qp = pathChart(
+        columnChart("q_vs_p", QObject::tr("Stress path: q against p′ (critical state - -)"), "p",
+                    QStringLiteral("p′ [kPa]"), 1e-3, QStringLiteral("q [kPa]"),
+                    solid("q", QStringLiteral("q"), 1e-3)));
+    qp.criticalState = ChartDefinition::CriticalState::StressRatio;
+    ChartDefinition qe = pathChart(strainChart(
+        "q_vs_eps1", QObject::tr("Deviator stress (a cyclic test's loops, its live cycle bold)"),
+        QStringLiteral("q [kPa]"), {solid("q", QStringLiteral("q"), 1e-3)}));
+    qe.liveCycle = true;
+    ChartDefinition ep = pathChart(
+        columnChart("e_vs_ln_p", QObject::tr("Void ratio against ln p′ (critical state line - -)"),
+                    "p", QStringLiteral("ln(p′ / 1 Pa)"), 1.0, QStringLiteral("e [-]"),
+                    solid("e", QStringLiteral("e"))));
+    ep.xLogarithm = true;
+    ep.criticalState = ChartDefinition::CriticalState::VoidRatio;
+    ChartDefinition cycles = pathChart(columnChart(
+        "p_per_cycle", QObject::tr("Cyclic tests: mean stress at the end of each cycle"), "cycle",
+        QStringLiteral("cycle"), 1.0, QStringLiteral("p′/p0 [-]"),
+        solid("p_over_p0", QStringLiteral("p′/p0"))));
+    cycles.derived = ChartDefinition::Derived::PressurePerCycle;
+    ChartDefinition envelope = pathChart(
+        columnChart("probe_envelope", QObject::tr("Stress probes: response envelope"), "d_sigma11",
+                    QStringLiteral("Δσ11 [kPa]"), 1e-3, QStringLiteral("Δσ22 [kPa]"),
+                    solid("d_sigma22", QStringLiteral("Δσ22"), 1e-3)));
+    envelope.derived = ChartDefinition::Derived::ProbeEnvelope;
+    for (ChartDefinition* chart : {&qp, &qe, &ep, &cycles, &envelope}) {
+        charts.push_back(std::move(*chart));
+    }
+    charts.push_back(compactionChart("compaction_p", QObject::tr("Compaction: mean stress"), "p",
+                                     QStringLiteral("p"), QStringLiteral("p [kPa]"), 1e-3));
+    charts.push_back(compactionChart("compaction_e", QObject::tr("Compaction: void ratio"), "e",
+                                     QStringLiteral("e"), QStringLiteral("e [-]"), 1.0));
+    charts.push_back(compactionChart("compaction_Z", QObject::tr("Compaction: coordination"), "Z",
+                                     QStringLiteral("Z"), QStringLiteral("Z [-]"), 1.0));
+    charts.push_back(compactionChart("compaction_I_uf", QObject::tr("Compaction: unbalanced force"),
+                                     "I_uf", QStringLiteral("I_uf"), QStringLiteral("I_uf [%]"),
+                                     1.0));
+    return charts;
 }
 
 // ---- HoverChartView ----
@@ -461,13 +422,12 @@ void ChartsPanel::setSeries(const std::vector<SeriesTable>& tables) {
             }
             std::vector<std::size_t>& rows = rowsOf[d.stage];
             for (std::size_t r = 0; r < table.rows.size(); ++r) {
-                const std::optional<StageKind> kind =
-                    r < table.stageKinds.size() ? stageKindFromName(table.stageKinds[r])
-                                                : std::nullopt;
+                const std::optional<StageKind> kind = r < table.stageKinds.size()
+                                                          ? stageKindFromName(table.stageKinds[r])
+                                                          : std::nullopt;
                 // The test charts (stage Shear) draw every test kind's rows.
-                const bool inStage =
-                    kind && (*kind == d.stage ||
-                             (d.stage == StageKind::Shear && isTestStage(*kind)));
+                const bool inStage = kind && (*kind == d.stage ||
+                                              (d.stage == StageKind::Shear && isTestStage(*kind)));
                 if (!shearOnly_ || inStage) {
                     rows.push_back(r);
                 }
@@ -507,11 +467,11 @@ void ChartsPanel::setSeries(const std::vector<SeriesTable>& tables) {
                     continue;
                 }
                 const bool first = &c == &d.curves.front();
-                Curve& curve = curveFor(chart, table.test, c.column, first,
-                                        QPen(colour, 1.6, c.style));
+                Curve& curve =
+                    curveFor(chart, table.test, c.column, first, QPen(colour, 1.6, c.style));
                 if (d.curves.size() > 1) {
-                    curve.series->setName(QStringLiteral("%1 %2").arg(
-                        QString::fromStdString(table.test), c.label));
+                    curve.series->setName(
+                        QStringLiteral("%1 %2").arg(QString::fromStdString(table.test), c.label));
                 }
                 Curve* live = d.liveCycle && cyclic && first
                                   ? &curveFor(chart, table.test, c.column + "/live cycle", false,
@@ -637,8 +597,7 @@ bool ChartsPanel::hasCurves(int chart) const {
 
 QList<QPointF> ChartsPanel::criticalStatePoints(int chart) const {
     const auto it = criticalStateLines_.find(chart);
-    return it == criticalStateLines_.end() || !it->second ? QList<QPointF>{}
-                                                          : it->second->points();
+    return it == criticalStateLines_.end() || !it->second ? QList<QPointF>{} : it->second->points();
 }
 
 void ChartsPanel::resizeEvent(QResizeEvent* event) {
