@@ -2,11 +2,15 @@
 
 #include <algorithm>
 
+#include <QCoreApplication>
+#include <QDir>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QWidget>
 
+#include "gui/command_process.h"
 #include "gui/duration_text.h"
 
 namespace grainlab::ui {
@@ -78,6 +82,115 @@ FolderScanner::~FolderScanner() {
     worker_.quit();
     worker_.wait();
     delete context_;
+}
+
+namespace {
+constexpr int kPollMs = 1000; ///< how often the folder is read [ms]
+} // namespace
+
+FolderCommand::FolderCommand(QWidget* view, const QString& grainlab, FolderCommandTexts texts,
+                             bool pollWhileShown)
+    : grainlab(grainlab.isEmpty() ? QCoreApplication::applicationFilePath() : grainlab),
+      row(texts.startTip, texts.stopTip, texts.unit), status(new QLabel), view_(view),
+      texts_(std::move(texts)), pollWhileShown_(pollWhileShown),
+      command_(new CommandProcess(view)) {
+    status->setWordWrap(true);
+    status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    poll.setInterval(kPollMs);
+    QObject::connect(
+        command_, &CommandProcess::ended, view,
+        [this](int code, const QString&, const QString& startError) {
+            if (!startError.isEmpty()) {
+                status->setText(
+                    QObject::tr("Could not start %1: %2").arg(this->grainlab, startError));
+            }
+            ended(code);
+        });
+}
+
+FolderCommand::~FolderCommand() {
+    poll.stop();
+    QObject::disconnect(command_, nullptr, view_, nullptr);
+}
+
+void FolderCommand::setHooks(FolderCommandHooks hooks) {
+    hooks_ = std::move(hooks);
+    QObject::connect(&poll, &QTimer::timeout, view_, [this] {
+        hooks_.rescan();
+        hooks_.updateProgress();
+    });
+    QObject::connect(row.start, &QPushButton::clicked, view_, [this] {
+        QString error;
+        if (!hooks_.start(&error)) {
+            status->setText(error);
+        }
+    });
+    QObject::connect(row.stop, &QPushButton::clicked, view_, [this] { stop(); });
+}
+
+void FolderCommand::say(const QString& text) {
+    status->setText(text);
+}
+
+bool FolderCommand::running() const {
+    return command_->running();
+}
+
+bool FolderCommand::stopping() const {
+    return command_->stopping();
+}
+
+QString FolderCommand::logPath() const {
+    return command_->logPath();
+}
+
+void FolderCommand::launch(const QStringList& arguments, const QString& logName, int finishedNow) {
+    const QString log = QDir(QDir::tempPath())
+                            .filePath(QStringLiteral("grainlab-%1-%2.log")
+                                          .arg(logName)
+                                          .arg(QCoreApplication::applicationPid()));
+    lastExit.reset();
+    row.started(finishedNow);
+    status->setText(QObject::tr("Running: %1 %2").arg(grainlab, arguments.join(QLatin1Char(' '))));
+    command_->start(grainlab, arguments, log);
+    poll.start();
+    hooks_.updateControls();
+    hooks_.updateProgress();
+}
+
+void FolderCommand::stop() {
+    if (command_->stop()) {
+        status->setText(texts_.stopping);
+        row.stop->setEnabled(false);
+    }
+}
+
+void FolderCommand::ended(int exitStatus) {
+    if (!pollWhileShown_ || !view_->isVisible()) {
+        poll.stop();
+    }
+    lastExit = exitStatus;
+    const QString said = hooks_.said();
+    status->setText(commandEndedText(exitStatus, command_->stopping(), status->text(),
+                                     texts_.finished.arg(said), texts_.stopped,
+                                     texts_.failed + said));
+    hooks_.rescan();
+    hooks_.updateControls();
+    hooks_.updateProgress();
+    hooks_.ended(exitStatus);
+}
+
+void FolderCommand::shown() {
+    if (pollWhileShown_) {
+        poll.start();
+    }
+    hooks_.rescan();
+}
+
+void FolderCommand::hidden() {
+    if (!running()) {
+        poll.stop();
+    }
 }
 
 } // namespace grainlab::ui

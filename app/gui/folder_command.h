@@ -1,18 +1,24 @@
 #pragma once
 // What the Study window and the Stability view share around a grainlab subcommand that works in
 // a folder (`grainlab study`, `grainlab stability`): the row that starts and stops it and shows
-// its progress with the ETA (CommandRow), and the scans of its folder on a worker thread, one at a
-// time, a stale one dropped (FolderScanner). GUI thread only, but for the scans themselves.
+// its progress with the ETA (CommandRow), the scans of its folder on a worker thread, one at a
+// time, a stale one dropped (FolderScanner), and the whole of it with the command's process, the
+// folder's polling and the status line (FolderCommand). GUI thread only, but for the scans
+// themselves.
 
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include <QElapsedTimer>
 #include <QMetaObject>
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <QThread>
+#include <QTimer>
+#include <QWidget>
 
 class QHBoxLayout;
 class QLabel;
@@ -115,6 +121,117 @@ private:
     std::uint64_t generation_ = 0;
     bool scanning_ = false;
     std::function<void()> again_; ///< asked for during a scan
+};
+
+class CommandProcess;
+
+/// What a FolderCommand says: the row's tool tips and unit ("runs", "cells"), and the status
+/// line's texts once Stop is asked and once the command ended (`finished` holds %1 for what the
+/// command said, `failed` %1 for the exit status and is followed by what it said).
+struct FolderCommandTexts {
+    QString startTip, stopTip, unit;
+    QString stopping, finished, stopped, failed;
+};
+
+/// What a FolderCommand asks of its view.
+struct FolderCommandHooks {
+    std::function<bool(QString*)> start;  ///< Start clicked: false with the reason when refused
+    std::function<void()> rescan;         ///< read the folder (on a FolderScanner)
+    std::function<void()> updateControls; ///< enable the buttons as the state says
+    std::function<void()> updateProgress; ///< the row's progress (CommandRow::show)
+    std::function<QString()> said;        ///< what the ended command said (its log read)
+    std::function<void(int)> ended;       ///< the command ended with this exit status
+};
+
+/// One folder command of a view: its process (output into a log file, so it goes on when the
+/// window closes), the row, the status line, the scans and the timer that reads the folder while
+/// the command runs (and, with `pollWhileShown`, while the view is shown).
+class FolderCommand {
+public:
+    FolderCommand(QWidget* view, const QString& grainlab, FolderCommandTexts texts,
+                  bool pollWhileShown);
+    /// Lets go of the command, which goes on.
+    ~FolderCommand();
+    FolderCommand(const FolderCommand&) = delete;
+    FolderCommand& operator=(const FolderCommand&) = delete;
+    /// The hooks; the buttons and the timer call them from now on.
+    void setHooks(FolderCommandHooks hooks);
+
+    QString grainlab; ///< the executable started (tests give the built grainlab)
+    CommandRow row;
+    FolderScanner scans; ///< forgotten when the folder changes
+    QTimer poll;
+    QLabel* status; ///< the status line, for the view's layout
+    std::optional<int> lastExit;
+
+    bool running() const;
+    bool stopping() const;
+    QString logPath() const;
+    /// Starts `grainlab arguments`, its output into grainlab-<logName>-<pid>.log in the temporary
+    /// folder; `finishedNow` items are finished already (the ETA counts from here).
+    void launch(const QStringList& arguments, const QString& logName, int finishedNow);
+    /// Asks the running command to stop (SIGINT).
+    void stop();
+    /// Puts `text` in the status line.
+    void say(const QString& text);
+    /// Reads the folder (the view's rescan()).
+    void rescanNow() { hooks_.rescan(); }
+    /// The view was shown / hidden.
+    void shown();
+    void hidden();
+
+private:
+    void ended(int exitStatus);
+
+    QWidget* view_;
+    FolderCommandTexts texts_;
+    bool pollWhileShown_;
+    CommandProcess* command_;
+    FolderCommandHooks hooks_;
+};
+
+/// A view of a folder that a grainlab subcommand writes (the Study window, the Stability view):
+/// its FolderCommand and what the window and the tests ask of it.
+class FolderCommandView : public QWidget {
+public:
+    FolderCommandView(QWidget* parent, Qt::WindowFlags flags, const QString& grainlab,
+                      FolderCommandTexts texts, bool pollWhileShown)
+        : QWidget(parent, flags), run_(this, grainlab, std::move(texts), pollWhileShown) {}
+
+    /// Asks the running command to stop (SIGINT): its runs or cells keep what they finished.
+    void stop() { run_.stop(); }
+    bool running() const { return run_.running(); }
+    /// The exit status of the last command (nothing while none has ended).
+    std::optional<int> lastExitStatus() const { return run_.lastExit; }
+    /// How often the folder is read while the command runs [ms].
+    void setPollInterval(int ms) { run_.poll.setInterval(ms); }
+
+    QProgressBar* progressBar() const { return run_.row.bar; }
+    QLabel* progressLabel() const { return run_.row.text; }
+    QPushButton* startButton() const { return run_.row.start; }
+    QPushButton* stopButton() const { return run_.row.stop; }
+    QLabel* statusLabel() const { return run_.status; }
+
+protected:
+    /// Reads the folder with `scan` on the worker thread, then hands the result to `scanned`;
+    /// a scan that threw puts its message in the status line.
+    template <class Result>
+    void scanFolder(std::function<std::shared_ptr<const Result>()> scan,
+                    std::function<void(std::shared_ptr<const Result>)> scanned) {
+        run_.scans.request<Result>(
+            this, std::move(scan),
+            [this, scanned = std::move(scanned)](std::shared_ptr<const Result> next,
+                                                 const QString& error) {
+                if (next) {
+                    scanned(std::move(next));
+                } else {
+                    run_.say(error);
+                }
+            },
+            [this] { run_.rescanNow(); });
+    }
+
+    FolderCommand run_;
 };
 
 } // namespace grainlab::ui

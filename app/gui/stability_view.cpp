@@ -20,7 +20,6 @@
 
 #include "common/resources.h"
 #include "grainlab/ui/heat_map_view.h"
-#include "gui/command_process.h"
 #include "gui/duration_text.h"
 #include "gui/stability_map_text.h"
 #include "gui/ui_text.h"
@@ -29,7 +28,6 @@
 namespace grainlab::ui {
 namespace {
 
-constexpr int kPollMs = 1000;                               ///< how often the folder is read [ms]
 const QString kPresetFileItem = QStringLiteral("\x01file"); ///< the box's "Preset file…" item
 const QPoint kNoSquare(-1, -1);
 
@@ -79,24 +77,20 @@ double shownValue(const StabilityCellResult& r, StabilityValue value) {
 } // namespace
 
 StabilityView::StabilityView(QWidget* parent, QString grainlab)
-    : QWidget(parent),
-      grainlab_(grainlab.isEmpty() ? QCoreApplication::applicationFilePath() : grainlab),
-      command_(new CommandProcess(this)),
-      row_(tr("Run the map (grainlab stability … --out FOLDER); a stopped map continues where "
+    : FolderCommandView(
+          parent, {}, grainlab,
+          {tr("Run the map (grainlab stability … --out FOLDER); a stopped map continues where "
               "it stopped"),
-           tr("Stop the map: the cells done are kept; Start continues"), tr("cells")) {
-    connect(command_, &CommandProcess::ended, this,
-            [this](int code, const QString&, const QString& startError) {
-                if (!startError.isEmpty()) {
-                    status_->setText(tr("Could not start %1: %2").arg(grainlab_, startError));
-                }
-                processEnded(code);
-            });
-    poll_.setInterval(kPollMs);
-    connect(&poll_, &QTimer::timeout, this, [this] {
-        rescan();
-        updateProgressText();
-    });
+           tr("Stop the map: the cells done are kept; Start continues"), tr("cells"),
+           tr("Stopping: the running cells end; the cells done are kept…"),
+           tr("The map finished. %1"),
+           tr("Stopped: the cells done are kept; Start continues the map."),
+           tr("The map failed (exit status %1):\n")},
+          true) {
+    run_.setHooks({[this](QString* error) { return start(error); }, [this] { rescan(); },
+                   [this] { updateControls(); }, [this] { updateProgressText(); },
+                   [this] { return stabilityLogSummary(run_.logPath()); },
+                   [this](int exitStatus) { emit mapEnded(exitStatus); }});
 
     preset_ = new QComboBox;
     preset_->setToolTip(tr("The map Start runs into the folder"));
@@ -130,14 +124,6 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
     files->addWidget(folderButton_, 1, 3);
     files->addWidget(folderHint, 2, 1, 1, 3);
     files->setColumnStretch(2, 1);
-
-    connect(row_.start, &QPushButton::clicked, this, [this] {
-        QString error;
-        if (!start(&error)) {
-            status_->setText(error);
-        }
-    });
-    connect(row_.stop, &QPushButton::clicked, this, &StabilityView::stop);
 
     xAxis_ = new QComboBox;
     yAxis_ = new QComboBox;
@@ -189,16 +175,12 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
     centre->addWidget(heatMap_, 1);
     centre->addWidget(details_);
 
-    status_ = new QLabel;
-    status_->setWordWrap(true);
-    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(files);
-    layout->addLayout(row_.layout);
+    layout->addLayout(run_.row.layout);
     layout->addLayout(mapRow);
     layout->addLayout(centre, 1);
-    layout->addWidget(status_);
+    layout->addWidget(run_.status);
 
     const QStringList shipped = shippedPresets();
     if (shipped.contains(QStringLiteral("tiny"))) {
@@ -208,10 +190,7 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
     updateControls();
 }
 
-StabilityView::~StabilityView() {
-    poll_.stop();
-    // A running map goes on without the window (its output goes to a file, not to us).
-}
+StabilityView::~StabilityView() = default; // a running map goes on (its output goes to a file)
 
 QStringList StabilityView::shippedPresets() {
     QStringList names;
@@ -299,7 +278,7 @@ void StabilityView::presetChosenInBox(int index) {
         preset_->setCurrentIndex(std::max(0, preset_->findData(choice_)));
     }
     if (!error.isEmpty()) {
-        status_->setText(error);
+        run_.status->setText(error);
     }
 }
 
@@ -314,21 +293,17 @@ void StabilityView::setMapFolder(const QString& folder) {
 void StabilityView::followFolder(const QString& folder, bool adoptItsMap) {
     folder_ = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
     folderLabel_->setText(folder_);
-    scans_.forget();
+    run_.scans.forget();
     state_.reset();
-    lastExit_.reset();
+    run_.lastExit.reset();
     adoptFolderMap_ = adoptItsMap;
     selected_ = kNoSquare;
     heatMap_->setSelectedCell(kNoSquare);
-    status_->clear();
+    run_.status->clear();
     redraw();
     updateProgressText();
     updateControls();
     rescan();
-}
-
-bool StabilityView::running() const {
-    return command_->running();
 }
 
 bool StabilityView::start(QString* error) {
@@ -356,43 +331,9 @@ bool StabilityView::start(QString* error) {
     }
     arguments << QStringLiteral("--out") << folder_;
     const std::string name = choice_.isEmpty() ? state_->spec.name : choiceSpec_.name;
-    // The map's own output (its progress, a failed cell's name) goes to a file: the map must not
-    // depend on the window's pipes, since it goes on when the window closes.
-    const QString logPath = QDir(QDir::tempPath())
-                                .filePath(QStringLiteral("grainlab-stability-%1-%2.log")
-                                              .arg(q(name))
-                                              .arg(QCoreApplication::applicationPid()));
-    lastExit_.reset();
-    row_.started(state_ ? state_->finishedCount() : 0);
-    status_->setText(tr("Running: %1 %2").arg(grainlab_, arguments.join(QLatin1Char(' '))));
-    command_->start(grainlab_, arguments, logPath);
-    poll_.start();
-    updateControls();
-    updateProgressText();
+    run_.launch(arguments, QStringLiteral("stability-%1").arg(q(name)),
+                state_ ? state_->finishedCount() : 0);
     return true;
-}
-
-void StabilityView::stop() {
-    if (command_->stop()) {
-        status_->setText(tr("Stopping: the running cells end; the cells done are kept…"));
-        row_.stop->setEnabled(false);
-    }
-}
-
-void StabilityView::processEnded(int exitStatus) {
-    if (!isVisible()) {
-        poll_.stop();
-    }
-    lastExit_ = exitStatus;
-    const QString said = stabilityLogSummary(command_->logPath());
-    status_->setText(commandEndedText(
-        exitStatus, command_->stopping(), status_->text(), tr("The map finished. %1").arg(said),
-        tr("Stopped: the cells done are kept; Start continues the map."),
-        tr("The map failed (exit status %1):\n") + said));
-    rescan();
-    updateControls();
-    updateProgressText();
-    emit mapEnded(exitStatus);
 }
 
 void StabilityView::rescan() {
@@ -400,19 +341,11 @@ void StabilityView::rescan() {
         return;
     }
     // Everything the scan needs is copied in: the worker never touches the view.
-    scans_.request<StabilityFolder>(
-        this,
+    scanFolder<StabilityFolder>(
         [folder = folder_.toStdString(), previous = state_] {
             return scanStabilityFolder(folder, previous);
         },
-        [this](std::shared_ptr<const StabilityFolder> next, const QString& error) {
-            if (next) {
-                scanned(std::move(next));
-            } else {
-                status_->setText(error);
-            }
-        },
-        [this] { rescan(); });
+        [this](std::shared_ptr<const StabilityFolder> next) { scanned(std::move(next)); });
 }
 
 void StabilityView::scanned(std::shared_ptr<const StabilityFolder> state) {
@@ -424,14 +357,14 @@ void StabilityView::scanned(std::shared_ptr<const StabilityFolder> state) {
     if (changed) {
         switch (state_->kind) {
         case StabilityFolder::Kind::Refused:
-            status_->setText(q(state_->reason));
+            run_.status->setText(q(state_->reason));
             break;
         case StabilityFolder::Kind::Map:
             if (adoptFolderMap_) {
                 setChoice(QString(), nullptr, false);
             }
             if (!state_->errors.empty()) {
-                status_->setText(q(state_->errors.front()));
+                run_.status->setText(q(state_->errors.front()));
             }
             break;
         case StabilityFolder::Kind::New:
@@ -549,9 +482,9 @@ void StabilityView::updateControls() {
     const bool isRunning = running();
     const bool refused = state_ && state_->kind == StabilityFolder::Kind::Refused;
     const bool folderMap = state_ && state_->kind == StabilityFolder::Kind::Map;
-    row_.start->setEnabled(!isRunning && !folder_.isEmpty() && state_ && !refused &&
-                           (!choice_.isEmpty() || folderMap));
-    row_.stop->setEnabled(isRunning && !command_->stopping());
+    run_.row.start->setEnabled(!isRunning && !folder_.isEmpty() && state_ && !refused &&
+                               (!choice_.isEmpty() || folderMap));
+    run_.row.stop->setEnabled(isRunning && !run_.stopping());
     folderButton_->setEnabled(!isRunning);
     preset_->setEnabled(!isRunning);
 }
@@ -561,8 +494,8 @@ void StabilityView::updateProgressText() {
     const int total = folderMap ? int(state_->cells.size())
                                 : (choice_.isEmpty() ? 0 : int(stabilityCells(choiceSpec_).size()));
     const int done = folderMap ? state_->finishedCount() : 0;
-    row_.show(done, total, running(),
-              running() ? stabilityLogProgress(command_->logPath()) : QString());
+    run_.row.show(done, total, running(),
+                  running() ? stabilityLogProgress(run_.logPath()) : QString());
 }
 
 void StabilityView::showSquare(QPoint square) {
@@ -605,15 +538,12 @@ void StabilityView::chooseFolderDialog() {
 }
 
 void StabilityView::showEvent(QShowEvent* event) {
-    poll_.start();
-    rescan();
+    run_.shown();
     QWidget::showEvent(event);
 }
 
 void StabilityView::hideEvent(QHideEvent* event) {
-    if (!running()) {
-        poll_.stop();
-    }
+    run_.hidden();
     QWidget::hideEvent(event);
 }
 

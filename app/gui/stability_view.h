@@ -29,11 +29,9 @@ class QPushButton;
 
 namespace grainlab::ui {
 
-class CommandProcess;
-
 class HeatMapView;
 
-class StabilityView : public QWidget {
+class StabilityView : public FolderCommandView {
     Q_OBJECT
 public:
     /// `grainlab`: the executable that runs `grainlab stability` (default: this application's).
@@ -41,7 +39,7 @@ public:
     ~StabilityView() override;
 
     /// The executable that runs `grainlab stability` (tests give the built grainlab).
-    void setExecutable(const QString& grainlab) { grainlab_ = grainlab; }
+    void setExecutable(const QString& grainlab) { run_.grainlab = grainlab; }
 
     /// The names of the shipped presets (resources/stability/*.json), e.g. "full", "tiny".
     static QStringList shippedPresets();
@@ -63,16 +61,9 @@ public:
     /// Starts (or continues) the map in the folder. Returns false and sets `error` when there is
     /// nothing to start, the folder is refused, or a map is running.
     bool start(QString* error = nullptr);
-    /// Asks the running map to stop (SIGINT): the cells done are kept.
-    void stop();
-    bool running() const;
-    /// The exit status of the last map process (nothing while none has ended).
-    std::optional<int> lastExitStatus() const { return lastExit_; }
 
     /// Reads the folder now (what the timer does while the view is shown or a map runs).
     void rescan();
-    /// How often the folder is read [ms].
-    void setPollInterval(int ms) { poll_.setInterval(ms); }
 
     /// The axes of the heat map (across, up); equal axes are refused (nothing changes).
     void setAxes(StabilityAxis x, StabilityAxis y);
@@ -92,11 +83,6 @@ public:
     QComboBox* xAxisBox() const { return xAxis_; }
     QComboBox* yAxisBox() const { return yAxis_; }
     QComboBox* valueBox() const { return value_; }
-    QProgressBar* progressBar() const { return row_.bar; }
-    QLabel* progressLabel() const { return row_.text; }
-    QPushButton* startButton() const { return row_.start; }
-    QPushButton* stopButton() const { return row_.stop; }
-    QLabel* statusLabel() const { return status_; }
 
 signals:
     /// The folder was read and the heat map redrawn.
@@ -114,14 +100,12 @@ private:
     void presetChosenInBox(int index);
     void chooseFolderDialog();
     void scanned(std::shared_ptr<const StabilityFolder> state);
-    void processEnded(int exitStatus);
     void redraw();
     void updateControls();
     void updateProgressText();
     void showSquare(QPoint cell);
     void axisChosen(QComboBox* changed, QComboBox* other, int previous);
 
-    QString grainlab_;
     QString choice_;              ///< what Start runs: a shipped name, a file, "" (the folder's)
     StabilityMapSpec choiceSpec_; ///< the preset chosen (unset for "")
     QString folder_;
@@ -130,12 +114,6 @@ private:
     std::shared_ptr<const StabilityFolder> state_;
     QPoint selected_{-1, -1};   ///< the square clicked last
     int lastX_ = 0, lastY_ = 3; ///< the axes' combo indices before the latest change
-
-    CommandProcess* command_; ///< the `grainlab stability` process, its output into a log file
-    std::optional<int> lastExit_;
-    CommandRow row_;      ///< Start, Stop, the cells finished and the ETA
-    FolderScanner scans_; ///< forgotten when the folder changes
-    QTimer poll_;
 
     QComboBox* preset_;
     QLabel* presetLabel_;
@@ -146,7 +124,6 @@ private:
     QComboBox* value_;
     HeatMapView* heatMap_;
     QLabel* details_;
-    QLabel* status_;
 };
 
 } // namespace grainlab::ui

@@ -23,15 +23,12 @@
 #include "grainlab/study_file.h"
 #include "grainlab/ui/plot_view.h"
 #include "grainlab/ui/study_figures.h"
-#include "gui/command_process.h"
 #include "gui/duration_text.h"
 #include "gui/stability_view.h"
 #include "gui/ui_text.h"
 
 namespace grainlab::ui {
 namespace {
-
-constexpr int kPollMs = 1000; ///< how often the folder is read while the study runs
 
 const MetricSummary* findMetric(const SettingSummary& s, const std::string& test,
                                 const std::string& metric) {
@@ -63,25 +60,20 @@ void setItems(QComboBox* box, const QStringList& items) {
 } // namespace
 
 StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
-    : QWidget(parent, Qt::Window),
-      grainlab_(grainlab.isEmpty() ? QCoreApplication::applicationFilePath() : grainlab),
-      command_(new CommandProcess(this)),
-      row_(tr("Run the study (grainlab study FILE --out FOLDER); a stopped study continues "
+    : FolderCommandView(
+          parent, Qt::Window, grainlab,
+          {tr("Run the study (grainlab study FILE --out FOLDER); a stopped study continues "
               "where it stopped"),
-           tr("Stop the study: its runs write checkpoints; Start continues"), tr("runs")) {
+           tr("Stop the study: its runs write checkpoints; Start continues"), tr("runs"),
+           tr("Stopping: the runs write their checkpoints…"), tr("The study finished. %1"),
+           tr("Stopped: the runs wrote checkpoints; Start continues the study."),
+           tr("The study failed (exit status %1): ")},
+          false) {
     setWindowTitle(tr("GrainLab — Study"));
-    connect(command_, &CommandProcess::ended, this,
-            [this](int code, const QString&, const QString& startError) {
-                if (!startError.isEmpty()) {
-                    status_->setText(tr("Could not start %1: %2").arg(grainlab_, startError));
-                }
-                processEnded(code);
-            });
-    poll_.setInterval(kPollMs);
-    connect(&poll_, &QTimer::timeout, this, [this] {
-        rescan();
-        updateProgressText();
-    });
+    run_.setHooks({[this](QString* error) { return start(error); }, [this] { rescan(); },
+                   [this] { updateControls(); }, [this] { updateProgressText(); },
+                   [this] { return logTail(); },
+                   [this](int exitStatus) { emit studyEnded(exitStatus); }});
 
     fileLabel_ = new QLabel(tr("no study open"));
     fileLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -106,14 +98,6 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     files->addWidget(folderButton_, 1, 2);
     files->addWidget(folderHint, 2, 1, 1, 2);
     files->setColumnStretch(1, 1);
-
-    connect(row_.start, &QPushButton::clicked, this, [this] {
-        QString error;
-        if (!start(&error)) {
-            status_->setText(error);
-        }
-    });
-    connect(row_.stop, &QPushButton::clicked, this, &StudyWindow::stop);
 
     test_ = new QComboBox;
     test_->setToolTip(tr("The shear test (confining pressure) charted"));
@@ -149,18 +133,14 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     centre->addWidget(chart_, 1);
     centre->addWidget(details_);
 
-    status_ = new QLabel;
-    status_->setWordWrap(true);
-    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-
     auto* studyTab = new QWidget;
     auto* layout = new QVBoxLayout(studyTab);
     layout->addLayout(files);
-    layout->addLayout(row_.layout);
+    layout->addLayout(run_.row.layout);
     layout->addLayout(chartRow);
     layout->addLayout(centre, 1);
-    layout->addWidget(status_);
-    stability_ = new StabilityView(nullptr, grainlab_);
+    layout->addWidget(run_.status);
+    stability_ = new StabilityView(nullptr, run_.grainlab);
     tabs_ = new QTabWidget;
     tabs_->addTab(studyTab, tr("Study"));
     tabs_->addTab(stability_, tr("Stability"));
@@ -172,13 +152,10 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     updateControls();
 }
 
-StudyWindow::~StudyWindow() {
-    poll_.stop();
-    // A running study goes on without the window (its output goes to a file, not to us).
-}
+StudyWindow::~StudyWindow() = default; // a running study goes on (its output goes to a file)
 
 void StudyWindow::setExecutable(const QString& grainlab) {
-    grainlab_ = grainlab;
+    run_.grainlab = grainlab;
     stability_->setExecutable(grainlab);
 }
 
@@ -236,7 +213,7 @@ bool StudyWindow::openStudy(const QString& path, QString* error) {
         metric_->addItems(metrics);
         test_->clear();
     }
-    status_->clear();
+    run_.status->clear();
     setStudyFolder(defaultStudyFolder(studyFile_, spec_));
     return true;
 }
@@ -247,17 +224,13 @@ void StudyWindow::setStudyFolder(const QString& folder) {
     }
     folder_ = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
     folderLabel_->setText(folder_);
-    scans_.forget();
+    run_.scans.forget();
     progress_.reset();
-    lastExit_.reset();
+    run_.lastExit.reset();
     redraw();
     updateProgressText();
     updateControls();
     rescan();
-}
-
-bool StudyWindow::running() const {
-    return command_->running();
 }
 
 bool StudyWindow::start(QString* error) {
@@ -268,47 +241,14 @@ bool StudyWindow::start(QString* error) {
     if (running()) {
         return fail(tr("The study is already running."));
     }
-    // The study's own output (its summary, a failed run's name) goes to a file: the study must
-    // not depend on the window's pipes, since it goes on when the window closes.
-    const QString logPath = QDir(QDir::tempPath())
-                                .filePath(QStringLiteral("grainlab-study-%1-%2.log")
-                                              .arg(q(spec_.name))
-                                              .arg(QCoreApplication::applicationPid()));
-    lastExit_.reset();
-    row_.started(progress_ ? progress_->finishedCount() : 0);
-    status_->setText(tr("Running: %1 study %2 --out %3").arg(grainlab_, studyFile_, folder_));
-    command_->start(grainlab_,
-                    {QStringLiteral("study"), studyFile_, QStringLiteral("--out"), folder_},
-                    logPath);
-    poll_.start();
-    updateControls();
-    updateProgressText();
+    run_.launch({QStringLiteral("study"), studyFile_, QStringLiteral("--out"), folder_},
+                QStringLiteral("study-%1").arg(q(spec_.name)),
+                progress_ ? progress_->finishedCount() : 0);
     return true;
 }
 
-void StudyWindow::stop() {
-    if (command_->stop()) {
-        status_->setText(tr("Stopping: the runs write their checkpoints…"));
-        row_.stop->setEnabled(false);
-    }
-}
-
-void StudyWindow::processEnded(int exitStatus) {
-    poll_.stop();
-    lastExit_ = exitStatus;
-    const QString said = logTail();
-    status_->setText(commandEndedText(
-        exitStatus, command_->stopping(), status_->text(), tr("The study finished. %1").arg(said),
-        tr("Stopped: the runs wrote checkpoints; Start continues the study."),
-        tr("The study failed (exit status %1): ") + said));
-    rescan();
-    updateControls();
-    updateProgressText();
-    emit studyEnded(exitStatus);
-}
-
 QString StudyWindow::logTail() const {
-    QFile file(command_->logPath());
+    QFile file(run_.logPath());
     if (!file.open(QIODevice::ReadOnly)) {
         return {};
     }
@@ -329,26 +269,18 @@ void StudyWindow::rescan() {
         return;
     }
     // Everything the scan needs is copied in: the worker never touches the window.
-    scans_.request<StudyProgress>(
-        this,
+    scanFolder<StudyProgress>(
         [folder = folder_.toStdString(), spec = spec_, plan = plan_, previous = progress_] {
             return scanStudyFolder(folder, spec, plan, previous);
         },
-        [this](std::shared_ptr<const StudyProgress> next, const QString& error) {
-            if (next) {
-                scanned(std::move(next));
-            } else {
-                status_->setText(error);
-            }
-        },
-        [this] { rescan(); });
+        [this](std::shared_ptr<const StudyProgress> next) { scanned(std::move(next)); });
 }
 
 void StudyWindow::scanned(std::shared_ptr<const StudyProgress> progress) {
     const bool changed = progress != progress_;
     progress_ = std::move(progress);
     if (!progress_->errors.empty()) {
-        status_->setText(q(progress_->errors.front()));
+        run_.status->setText(q(progress_->errors.front()));
     }
     if (changed) {
         fillChoices();
@@ -398,8 +330,8 @@ void StudyWindow::redraw() {
 
 void StudyWindow::updateControls() {
     const bool isRunning = running();
-    row_.start->setEnabled(haveStudy_ && !isRunning);
-    row_.stop->setEnabled(isRunning);
+    run_.row.start->setEnabled(haveStudy_ && !isRunning);
+    run_.row.stop->setEnabled(isRunning);
     folderButton_->setEnabled(haveStudy_ && !isRunning);
     export_->setEnabled(progress_ && !progress_->results.empty());
     recommended_->setEnabled(!folder_.isEmpty() &&
@@ -407,7 +339,7 @@ void StudyWindow::updateControls() {
 }
 
 void StudyWindow::updateProgressText() {
-    row_.show(progress_ ? progress_->finishedCount() : 0, int(plan_.runs.size()), running());
+    run_.row.show(progress_ ? progress_->finishedCount() : 0, int(plan_.runs.size()), running());
 }
 
 int StudyWindow::settingOfPoint(int point) const {
@@ -493,7 +425,7 @@ void StudyWindow::clickPoint(int point) {
     }
     const QString folder = firstFinishedRunFolder(setting);
     if (folder.isEmpty()) {
-        status_->setText(
+        run_.status->setText(
             tr("%1: no finished run yet").arg(q(plan_.settings[std::size_t(setting)].id)));
         return;
     }
@@ -522,7 +454,7 @@ void StudyWindow::openStudyDialog() {
         tr("Study files (*.json)"));
     QString error;
     if (!path.isEmpty() && !openStudy(path, &error)) {
-        status_->setText(error);
+        run_.status->setText(error);
     }
 }
 
@@ -541,8 +473,8 @@ void StudyWindow::exportFiguresDialog() {
     }
     QString error;
     const QStringList files = exportFigures(folder, &error);
-    status_->setText(error.isEmpty() ? tr("%1 files written into %2").arg(files.size()).arg(folder)
-                                     : error);
+    run_.status->setText(
+        error.isEmpty() ? tr("%1 files written into %2").arg(files.size()).arg(folder) : error);
 }
 
 void StudyWindow::openRecommended() {

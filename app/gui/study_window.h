@@ -29,11 +29,10 @@ class QTabWidget;
 
 namespace grainlab::ui {
 
-class CommandProcess;
 class PlotView;
 class StabilityView;
 
-class StudyWindow : public QWidget {
+class StudyWindow : public FolderCommandView {
     Q_OBJECT
 public:
     /// `grainlab`: the executable that runs `grainlab study` (default: this application's).
@@ -55,16 +54,9 @@ public:
     /// Starts (or continues) the study in its folder. Returns false and sets `error` when there
     /// is no study or it is already running.
     bool start(QString* error = nullptr);
-    /// Asks the running study to stop (SIGINT): its runs write checkpoints and end.
-    void stop();
-    bool running() const;
-    /// The exit status of the last study process (nothing while none has ended).
-    std::optional<int> lastExitStatus() const { return lastExit_; }
 
     /// Reads the study folder now (what the timer does while the study runs).
     void rescan();
-    /// How often the folder is read while the study runs [ms].
-    void setPollInterval(int ms) { poll_.setInterval(ms); }
     /// Writes the study's figures into `folder`; returns the files written.
     QStringList exportFigures(const QString& folder, QString* error = nullptr);
     /// The folder of the first finished run of `setting`, or "" when none has finished.
@@ -81,11 +73,7 @@ public:
     QLabel* details() const { return details_; }
     QComboBox* testBox() const { return test_; }
     QComboBox* metricBox() const { return metric_; }
-    QProgressBar* progressBar() const { return row_.bar; }
-    QPushButton* startButton() const { return row_.start; }
-    QPushButton* stopButton() const { return row_.stop; }
     QPushButton* recommendedButton() const { return recommended_; }
-    QLabel* statusLabel() const { return status_; }
     /// The Stability tab.
     StabilityView* stabilityView() const { return stability_; }
     QTabWidget* tabs() const { return tabs_; }
@@ -108,7 +96,6 @@ private:
     void exportFiguresDialog();
     void openRecommended();
     void scanned(std::shared_ptr<const StudyProgress> progress);
-    void processEnded(int exitStatus);
     void redraw();
     void fillChoices();
     void updateControls();
@@ -117,18 +104,11 @@ private:
     void clickPoint(int point);
     QString logTail() const;
 
-    QString grainlab_;
     QString studyFile_, folder_;
     StudySpec spec_;
     StudyPlan plan_;
     bool haveStudy_ = false;
     std::shared_ptr<const StudyProgress> progress_;
-
-    CommandProcess* command_; ///< the `grainlab study` process, its output into a log file
-    std::optional<int> lastExit_;
-    CommandRow row_;      ///< Start, Stop, the runs finished and the ETA
-    FolderScanner scans_; ///< forgotten when the study or the folder changes
-    QTimer poll_;
 
     QLabel* fileLabel_;
     QLabel* folderLabel_;
@@ -139,7 +119,6 @@ private:
     QLabel* details_;
     QPushButton* export_;
     QPushButton* recommended_;
-    QLabel* status_;
     QTabWidget* tabs_;
     StabilityView* stability_;
 };
