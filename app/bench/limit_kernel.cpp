@@ -193,24 +193,8 @@ void LimitKernel::rebuild() {
 
 void LimitKernel::buildIndex() {
     const std::size_t n = x1_.size();
-    // The gather index: grain i is first in [firstStart_[i], firstStart_[i+1]), second in the
-    // pairs secondPairs_[secondStart_[i] .. secondStart_[i+1]).
     const std::size_t pairs = first_.size();
-    firstStart_.assign(n + 1, 0);
-    secondStart_.assign(n + 1, 0);
-    for (std::size_t p = 0; p < pairs; ++p) {
-        ++firstStart_[first_[p] + 1];
-        ++secondStart_[second_[p] + 1];
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-        firstStart_[i + 1] += firstStart_[i];
-        secondStart_[i + 1] += secondStart_[i];
-    }
-    secondPairs_.resize(pairs);
-    std::vector<std::int32_t> next(secondStart_.begin(), secondStart_.end() - 1);
-    for (std::size_t p = 0; p < pairs; ++p) {
-        secondPairs_[next[second_[p]]++] = std::int32_t(p);
-    }
+    pairIndex_.build(n, first_, second_);
     radiusFirst_.resize(pairs);
     radiusSecond_.resize(pairs);
     for (std::size_t p = 0; p < pairs; ++p) {
@@ -305,9 +289,9 @@ void LimitKernel::integrate() {
     const double* pairF2 = force2_.data();
     const double* pairTA = torqueFirst_.data();
     const double* pairTB = torqueSecond_.data();
-    const std::int32_t* firstStart = firstStart_.data();
-    const std::int32_t* secondStart = secondStart_.data();
-    const std::int32_t* secondPairs = secondPairs_.data();
+    const std::int32_t* firstStart = pairIndex_.firstStart.data();
+    const std::int32_t* secondStart = pairIndex_.secondStart.data();
+    const std::int32_t* secondPairs = pairIndex_.secondPairs.data();
     const int blocks = reductionBlocks(n);
     double maxDrift2 = 0.0;
 #pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : maxDrift2)
@@ -316,21 +300,11 @@ void LimitKernel::integrate() {
         const std::size_t end = std::min(n, begin + kReductionBlock);
         double force1[kReductionBlock], force2[kReductionBlock], torque[kReductionBlock];
         for (std::size_t i = begin; i < end; ++i) {
-            double a = 0, c = 0, m = 0;
-            for (std::int32_t p = firstStart[i]; p < firstStart[i + 1]; ++p) {
-                a -= pairF1[p];
-                c -= pairF2[p];
-                m += pairTA[p];
-            }
-            for (std::int32_t q = secondStart[i]; q < secondStart[i + 1]; ++q) {
-                const std::int32_t p = secondPairs[q];
-                a += pairF1[p];
-                c += pairF2[p];
-                m += pairTB[p];
-            }
-            force1[i - begin] = a;
-            force2[i - begin] = c;
-            torque[i - begin] = m;
+            const GrainSum sum =
+                sumOnGrain(i, firstStart, secondStart, secondPairs, pairF1, pairF2, pairTA, pairTB);
+            force1[i - begin] = sum.f1;
+            force2[i - begin] = sum.f2;
+            torque[i - begin] = sum.torque;
         }
 #pragma omp simd reduction(max : maxDrift2)
         for (std::size_t i = begin; i < end; ++i) {
@@ -386,17 +360,13 @@ void LimitKernel::netForces(std::vector<double>& f1, std::vector<double>& f2,
     f2.assign(n, 0.0);
     torque.assign(n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
-        for (std::int32_t p = firstStart_[i]; p < firstStart_[i + 1]; ++p) {
-            f1[i] -= force1_[p];
-            f2[i] -= force2_[p];
-            torque[i] += torqueFirst_[p];
-        }
-        for (std::int32_t q = secondStart_[i]; q < secondStart_[i + 1]; ++q) {
-            const std::int32_t p = secondPairs_[q];
-            f1[i] += force1_[p];
-            f2[i] += force2_[p];
-            torque[i] += torqueSecond_[p];
-        }
+        const GrainSum sum =
+            sumOnGrain(i, pairIndex_.firstStart.data(), pairIndex_.secondStart.data(),
+                       pairIndex_.secondPairs.data(), force1_.data(), force2_.data(),
+                       torqueFirst_.data(), torqueSecond_.data());
+        f1[i] = sum.f1;
+        f2[i] = sum.f2;
+        torque[i] = sum.torque;
     }
 }
 

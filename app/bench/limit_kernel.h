@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "grainlab/pair_index.h"
 #include "grainlab/simulation_state.h"
 
 namespace grainlab {
@@ -58,7 +59,7 @@ private:
     /// r_i and r_j in pair order [m] (as the engine: no radius gathered); stored f_t [N].
     std::vector<double> radiusFirst_, radiusSecond_, tangential_;
     std::vector<double> force1_, force2_, torqueFirst_, torqueSecond_;
-    std::vector<std::int32_t> firstStart_, secondStart_, secondPairs_;
+    PairIndex pairIndex_;
     std::vector<double> reference1_, reference2_;
     std::array<double, 4> referenceCell_{};
     double skinInUse_ = 0, maxDrift_ = 0;

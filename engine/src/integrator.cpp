@@ -171,9 +171,9 @@ void Simulation::integrateGrains(const std::array<double, 4>& F) {
     const double* pairF2 = pairForce2_.data();
     const double* pairTA = torqueFirst_.data();
     const double* pairTB = torqueSecond_.data();
-    const std::int32_t* firstStart = firstStart_.data();
-    const std::int32_t* secondStart = secondStart_.data();
-    const std::int32_t* secondPairs = secondPairs_.data();
+    const std::int32_t* firstStart = pairIndex_.firstStart.data();
+    const std::int32_t* secondStart = pairIndex_.secondStart.data();
+    const std::int32_t* secondPairs = pairIndex_.secondPairs.data();
     const int blocks = reductionBlocks(n);
     grainBlockSums_.resize(std::size_t(blocks));
     double maxDrift2 = 0.0;
@@ -188,21 +188,11 @@ void Simulation::integrateGrains(const std::array<double, 4>& F) {
         //    where the grain is first (contiguous, -F), then those where it is second (+F).
         double force1[kReductionBlock], force2[kReductionBlock], torque[kReductionBlock];
         for (std::size_t i = begin; i < end; ++i) {
-            double a = 0, c = 0, m = 0;
-            for (std::int32_t p = firstStart[i]; p < firstStart[i + 1]; ++p) {
-                a -= pairF1[p];
-                c -= pairF2[p];
-                m += pairTA[p];
-            }
-            for (std::int32_t q = secondStart[i]; q < secondStart[i + 1]; ++q) {
-                const std::int32_t p = secondPairs[q];
-                a += pairF1[p];
-                c += pairF2[p];
-                m += pairTB[p];
-            }
-            force1[i - begin] = a;
-            force2[i - begin] = c;
-            torque[i - begin] = m;
+            const GrainSum sum =
+                sumOnGrain(i, firstStart, secondStart, secondPairs, pairF1, pairF2, pairTA, pairTB);
+            force1[i - begin] = sum.f1;
+            force2[i - begin] = sum.f2;
+            torque[i - begin] = sum.torque;
         }
         // 2. Central differences on the fluctuating velocity; positions also move with the
         //    affine field L x. Vectorised over the block.

@@ -168,21 +168,7 @@ void Simulation::buildPairIndex() {
             throw std::invalid_argument("simulation: the pairs must be sorted by first grain");
         }
     }
-    firstStart_.assign(n + 1, 0);
-    secondStart_.assign(n + 1, 0);
-    for (std::size_t p = 0; p < pairCount; ++p) {
-        ++firstStart_[first[p] + 1];
-        ++secondStart_[second[p] + 1];
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-        firstStart_[i + 1] += firstStart_[i];
-        secondStart_[i + 1] += secondStart_[i];
-    }
-    secondPairs_.resize(pairCount);
-    std::vector<std::int32_t> fill(secondStart_.begin(), secondStart_.end() - 1);
-    for (std::size_t p = 0; p < pairCount; ++p) {
-        secondPairs_[fill[second[p]]++] = static_cast<std::int32_t>(p);
-    }
+    pairIndex_.build(n, first, second);
     for (auto* v : {&pairForce1_, &pairForce2_, &torqueFirst_, &torqueSecond_, &normalForce_}) {
         v->assign(pairCount, 0.0);
     }

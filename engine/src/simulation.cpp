@@ -105,8 +105,8 @@ struct ArcTables {
 /// quadrant kernel; where that asks, the 16-pair reference (always with `allArcPairs`). Scalar:
 /// for the pairs the vector loop hands on, and the network.
 ContactGeometry decideOvalPair(const ArcTables& t, const OvalShape& A, const OvalShape& B,
-                               std::int32_t i, std::int32_t j, double l1, double l2,
-                               double smaller, bool allArcPairs) {
+                               std::int32_t i, std::int32_t j, double l1, double l2, double smaller,
+                               bool allArcPairs) {
     if (!allArcPairs) {
         const QuadrantContact q = ovalContactQuadrant(
             t.endOffset[i], t.sideOffset[i], t.endRadius[i], t.sideRadius[i], t.cosJ[i], t.sinJ[i],
@@ -281,8 +281,7 @@ void Simulation::evaluateForces(bool increment) {
 ContactGeometry Simulation::pairGeometry(std::size_t p, double l1, double l2) const {
     const std::int32_t i = s_.pairs.first[p], j = s_.pairs.second[p];
     if (allDisks_) {
-        return diskContact(halfWidth_[i], pairHalfWidthFirst_[p] + pairHalfWidthSecond_[p], l1,
-                           l2);
+        return diskContact(halfWidth_[i], pairHalfWidthFirst_[p] + pairHalfWidthSecond_[p], l1, l2);
     }
     const OvalShape& A = s_.shapes[s_.grains.shape[i]];
     const OvalShape& B = s_.shapes[s_.grains.shape[j]];
@@ -290,8 +289,7 @@ ContactGeometry Simulation::pairGeometry(std::size_t p, double l1, double l2) co
                            sideRadius_.data(), cosJunction_.data(), sinJunction_.data(),
                            cosTheta_.data(),   sinTheta_.data()};
     const double smaller = smallerWidth(pairHalfWidthFirst_[p], pairHalfWidthSecond_[p]);
-    return decideOvalPair(tables, A, B, i, j, l1, l2, smaller,
-                          s_.parameters.allArcPairs);
+    return decideOvalPair(tables, A, B, i, j, l1, l2, smaller, s_.parameters.allArcPairs);
 }
 
 template <Simulation::PairShape Shape, bool Frictional, bool Increment>
@@ -508,21 +506,13 @@ void Simulation::gatherForces(std::vector<double>& f1, std::vector<double>& f2,
     torque.assign(n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
         // The same order as integrateGrains: pairs where i is first, then where it is second.
-        double a = 0, b = 0, m = 0;
-        for (std::int32_t p = firstStart_[i]; p < firstStart_[i + 1]; ++p) {
-            a -= pairForce1_[p];
-            b -= pairForce2_[p];
-            m += torqueFirst_[p];
-        }
-        for (std::int32_t q = secondStart_[i]; q < secondStart_[i + 1]; ++q) {
-            const std::int32_t p = secondPairs_[q];
-            a += pairForce1_[p];
-            b += pairForce2_[p];
-            m += torqueSecond_[p];
-        }
-        f1[i] = a;
-        f2[i] = b;
-        torque[i] = m;
+        const GrainSum sum =
+            sumOnGrain(i, pairIndex_.firstStart.data(), pairIndex_.secondStart.data(),
+                       pairIndex_.secondPairs.data(), pairForce1_.data(), pairForce2_.data(),
+                       torqueFirst_.data(), torqueSecond_.data());
+        f1[i] = sum.f1;
+        f2[i] = sum.f2;
+        torque[i] = sum.torque;
     }
 }
 
@@ -533,8 +523,7 @@ void Simulation::checkOverlaps() const {
     const double limit = s_.parameters.stability.maxOverlapFraction;
     const auto network = contactNetwork();
     for (const ContactRecord& c : network.contacts) {
-        const double ratio =
-            c.overlap / smallerWidth(halfWidth_[c.first], halfWidth_[c.second]);
+        const double ratio = c.overlap / smallerWidth(halfWidth_[c.first], halfWidth_[c.second]);
         if (ratio > limit) {
             throw SimulationError(
                 s_.step, c.first,

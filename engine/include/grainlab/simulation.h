@@ -14,6 +14,7 @@
 
 #include "grainlab/contact_geometry.h"
 #include "grainlab/contact_network.h"
+#include "grainlab/pair_index.h"
 #include "grainlab/periodic_cell.h"
 #include "grainlab/simulation_state.h"
 #include "grainlab/stress_and_energies.h"
@@ -129,9 +130,7 @@ private:
     // no half-width).
     std::vector<double> pairHalfWidthFirst_, pairHalfWidthSecond_;
     std::vector<double> pairForce1_, pairForce2_, torqueFirst_, torqueSecond_, normalForce_;
-    // Pairs are sorted by first grain: grain i is first in [firstStart_[i], firstStart_[i+1]);
-    // it is second in the pairs secondPairs_[secondStart_[i] .. secondStart_[i+1]).
-    std::vector<std::int32_t> firstStart_, secondStart_, secondPairs_;
+    PairIndex pairIndex_; ///< the pairs on each grain (buildPairIndex())
     std::vector<double> blockSums_, grainBlockSums_;
     bool allDisks_ = true;
     double maxHalfWidth_ = 0;
