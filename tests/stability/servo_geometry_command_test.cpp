@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_folders.h"
+
 #include "grainlab/geometry_map.h"
 #include "grainlab/servo_map.h"
 
@@ -19,25 +21,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path freshFolder(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() /
-                         ("grainlab-stability-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    return dir;
-}
-
-std::string text(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-int run(const std::string& command) {
-    const int status = std::system((command + " >/dev/null 2>&1").c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
+using test::freshFolder;
+using test::text;
+const auto run = test::runQuietly;
 const std::string kExe = GRAINLAB_EXE;
 
 std::size_t rows(const std::string& csv) {

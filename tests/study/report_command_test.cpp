@@ -30,12 +30,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::freshFolder;
+using test::run;
 using test::text;
 
-int run(const std::string& command) {
-    const int status = std::system(command.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 std::vector<std::vector<std::string>> readCsv(const fs::path& p) {
     std::vector<std::vector<std::string>> t;

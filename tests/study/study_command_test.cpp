@@ -31,14 +31,11 @@ namespace {
 namespace fs = std::filesystem;
 using test::childrenOf;
 using test::freshFolder;
+using test::run;
 using test::text;
 
 const std::string kStudy = GRAINLAB_SOURCE_DIR "/resources/studies/tiny.json";
 
-int run(const std::string& command) {
-    const int status = std::system(command.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 /// A CSV file as rows of cells (no quoted cells in the study's files).
 using Table = std::vector<std::vector<std::string>>;

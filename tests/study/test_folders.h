@@ -1,12 +1,15 @@
 #pragma once
-// Folders and files for the study tests: a fresh folder per test process (ctest runs the tests
-// side by side), a file's whole text, and the processes the pool started (from /proc).
+// Folders, files and commands for the study and stability tests: a fresh folder per test process
+// (ctest runs the tests side by side), a file's whole text, a shell command's exit status, and
+// the processes the pool started (from /proc).
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace grainlab::test {
@@ -16,6 +19,17 @@ inline std::filesystem::path freshFolder(const std::string& name) {
                                       ("grainlab-study-" + name + "-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     return dir;
+}
+
+/// The exit status of `command` run by the shell (-1 when a signal ended it).
+inline int run(const std::string& command) {
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// The same, its output dropped.
+inline int runQuietly(const std::string& command) {
+    return run(command + " >/dev/null 2>&1");
 }
 
 inline std::string text(const std::filesystem::path& p) {
