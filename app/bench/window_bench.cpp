@@ -106,11 +106,10 @@ ExperimentConfig firstTestOf(const std::string& path, int threads) {
 class ShearStartCapture final : public RunOutput {
 public:
     void record(const SeriesTable&) override {}
-    void checkpoint(const std::string& name, const SimulationState& state,
-                    const std::string& runnerState) override {
-        if (!found && name.find("-shear-") != std::string::npos) {
-            resume.state = state;
-            resume.runnerState = runnerState;
+    void checkpoint(const CheckpointData& data) override {
+        if (!found && data.name.find("-shear-") != std::string::npos) {
+            resume.state = *data.state;
+            resume.runnerState = data.runnerState;
             found = true;
         }
     }

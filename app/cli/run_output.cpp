@@ -166,22 +166,8 @@ void RunOutputFolder::record(const SeriesTable& series) {
     appender->append(series);
 }
 
-void RunOutputFolder::checkpoint(const std::string& name, const SimulationState& state,
-                                 const std::string& runnerState) {
-    runFile_->checkpoint(name, state, runnerState);
-}
-
-void RunOutputFolder::checkpoint(const std::string& name, const SimulationState& state,
-                                 const std::string& runnerState, const StageIdentity& identity) {
-    runFile_->checkpoint(name, state, runnerState, identity);
-}
-
 void RunOutputFolder::sample(double pressure, const SimulationState& state) {
     runFile_->sample(pressure, state);
-}
-
-void RunOutputFolder::voidCells(const std::string& name, const VoidCellSet& cells) {
-    runFile_->voidCells(name, cells);
 }
 
 void RunOutputFolder::checkpoint(const CheckpointData& data) {

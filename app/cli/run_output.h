@@ -42,13 +42,8 @@ public:
     RunOutputFolder(const std::string& folder, const std::string& experimentText, bool resume);
 
     void record(const SeriesTable& series) override;
-    void checkpoint(const std::string& name, const SimulationState& state,
-                    const std::string& runnerState) override;
-    void checkpoint(const std::string& name, const SimulationState& state,
-                    const std::string& runnerState, const StageIdentity& identity) override;
-    void sample(double pressure, const SimulationState& state) override;
-    void voidCells(const std::string& name, const VoidCellSet& cells) override;
     void checkpoint(const CheckpointData& data) override;
+    void sample(double pressure, const SimulationState& state) override;
     void warnings(const std::vector<RunWarning>& all) override;
 
     std::string runFilePath() const;

@@ -87,12 +87,6 @@ private:
             costSamples_ = 0;
         }
     }
-    void checkpoint(const std::string& name, const SimulationState& state,
-                    const std::string& runnerState) override {
-        if (folder_) {
-            folder_->checkpoint(name, state, runnerState);
-        }
-    }
     void checkpoint(const CheckpointData& data) override {
         if (folder_) {
             folder_->checkpoint(data); // with its identity, contacts and the running peak
@@ -101,11 +95,6 @@ private:
     void sample(double pressure, const SimulationState& state) override {
         if (folder_) {
             folder_->sample(pressure, state);
-        }
-    }
-    void voidCells(const std::string& name, const VoidCellSet& cells) override {
-        if (folder_) {
-            folder_->voidCells(name, cells);
         }
     }
     void warnings(const std::vector<RunWarning>& all) override {

@@ -628,14 +628,7 @@ void RunFile::checkpoint(const std::string& name, const SimulationState& state,
     // With its void cells (written next): about as many cells as grains / 2.
     const std::uint64_t bytes = stateBytes(state) + runnerState.size() + state.grains.size() * 64;
     impl_->write(bytes, "checkpoint " + name,
-                 [&] { checkpointNow(name, state, runnerState, nullptr); });
-}
-
-void RunFile::checkpoint(const std::string& name, const SimulationState& state,
-                         const std::string& runnerState, const StageIdentity& identity) {
-    const std::uint64_t bytes = stateBytes(state) + runnerState.size() + state.grains.size() * 72;
-    impl_->write(bytes, "checkpoint " + name,
-                 [&] { checkpointNow(name, state, runnerState, &identity); });
+                 [&] { checkpointNow(name, state, runnerState); });
 }
 
 void RunFile::checkpoint(const CheckpointData& data) {
@@ -693,10 +686,10 @@ void RunFile::checkpointNow(const CheckpointData& data) {
 }
 
 void RunFile::checkpointNow(const std::string& name, const SimulationState& state,
-                            const std::string& runnerState, const StageIdentity* identity) {
+                            const std::string& runnerState) {
     try {
         guarded(impl_->path, "writing checkpoint " + name, [&] {
-            impl_->writeStateGroup("checkpoints", name, state, &runnerState, {}, identity);
+            impl_->writeStateGroup("checkpoints", name, state, &runnerState, {}, nullptr);
         });
     } catch (const std::runtime_error& e) {
         const std::string what = e.what();
@@ -725,22 +718,6 @@ void RunFile::sampleNow(double pressure, const SimulationState& state) {
         }
         throw std::runtime_error(fmt::format("{}: sample {}: {}", impl_->path, name, what));
     }
-}
-
-void RunFile::voidCells(const std::string& name, const VoidCellSet& cells) {
-    impl_->write(voidCellBytes(cells), "the void cells of checkpoint " + name,
-                 [&] { voidCellsNow(name, cells); });
-}
-
-void RunFile::voidCellsNow(const std::string& name, const VoidCellSet& cells) {
-    guarded(impl_->path, "writing the void cells of checkpoint " + name, [&] {
-        H5::Group checkpoint = impl_->file.openGroup("checkpoints").openGroup(linkName(name));
-        if (checkpoint.nameExists("void_cells")) {
-            checkpoint.unlink("void_cells");
-        }
-        writeVoidCells(checkpoint, cells);
-        impl_->flushNow();
-    });
 }
 
 // ---- readers -------------------------------------------------------------------------------

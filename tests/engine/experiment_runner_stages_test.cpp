@@ -59,7 +59,6 @@ public:
         }
         series.push_back(table);
     }
-    void checkpoint(const std::string&, const SimulationState&, const std::string&) override {}
     void sample(double pressure, const SimulationState& state) override {
         samples[pressure] = state;
     }

@@ -56,20 +56,15 @@ public:
     /// cut back and its tail rewritten; if the columns changed it is rewritten whole. The file
     /// mirrors the table after each call.
     void record(const SeriesTable& series) override;
-    /// Writes /checkpoints/<name> (replacing an older one of that name) and flushes.
+    /// Writes /checkpoints/<name> (replacing an older one of that name), the state and the
+    /// runner state only, and flushes.
     void checkpoint(const std::string& name, const SimulationState& state,
-                    const std::string& runnerState) override;
-    /// ... with the identity of its stage as attributes (stage_kind, test, pressure,
-    /// axial_strain) and the dataset theta_at_test_start.
-    void checkpoint(const std::string& name, const SimulationState& state,
-                    const std::string& runnerState, const StageIdentity& identity) override;
+                    const std::string& runnerState);
     /// Writes /samples/<pressure>Pa (e.g. /samples/15000Pa) and flushes.
     void sample(double pressure, const SimulationState& state) override;
-    /// Writes /checkpoints/<name>/void_cells: one row per void cell (valence, area, elongation,
-    /// direction, centroid, its grains as CSR) and the valence histogram.
-    void voidCells(const std::string& name, const VoidCellSet& cells) override;
     /// Writes /checkpoints/<name> whole before it appears under its name: the state, the
-    /// runner state (not for a peak checkpoint), the identity, the contacts with the shapes'
+    /// runner state (not for a peak checkpoint), the identity of its stage (attributes
+    /// stage_kind, test, pressure, axial_strain; the dataset theta_at_test_start), the contacts with the shapes'
     /// outlines, the void cells and the running peak; for a peak checkpoint also the attribute
     /// peak_checkpoint of its test. Flushes.
     void checkpoint(const CheckpointData& data) override;
@@ -94,9 +89,8 @@ private:
     void closeHandles();
     void recordNow(const SeriesTable& series);
     void checkpointNow(const std::string& name, const SimulationState& state,
-                       const std::string& runnerState, const StageIdentity* identity);
+                       const std::string& runnerState);
     void sampleNow(double pressure, const SimulationState& state);
-    void voidCellsNow(const std::string& name, const VoidCellSet& cells);
     void checkpointNow(const CheckpointData& data);
 
     struct Impl;

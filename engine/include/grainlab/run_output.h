@@ -58,35 +58,14 @@ public:
     virtual ~RunOutput() = default;
     /// A new record (row) of test `series.test`; `series` holds all rows so far.
     virtual void record(const SeriesTable& series) = 0;
-    /// A complete checkpoint: continuing from it gives the same numbers.
-    virtual void checkpoint(const std::string& name, const SimulationState& state,
-                            const std::string& runnerState) = 0;
-    /// The same, with the identity of its stage (the runner calls this one; by default it
-    /// drops the identity).
-    virtual void checkpoint(const std::string& name, const SimulationState& state,
-                            const std::string& runnerState, const StageIdentity& identity) {
-        (void)identity;
-        checkpoint(name, state, runnerState);
-    }
+    /// A complete checkpoint (continuing from it gives the same numbers) with its stage's
+    /// identity, its contacts, void cells and the running peak.
+    virtual void checkpoint(const CheckpointData& data) = 0;
     /// A compacted sample, kept for the shear tests.
     virtual void sample(double pressure, const SimulationState& state) = 0;
-    /// The void cells of the configuration of checkpoint `name` (written just before).
-    virtual void voidCells(const std::string& name, const VoidCellSet& cells) {
-        (void)name;
-        (void)cells;
-    }
     /// Every warning the run has given so far (run_warning.h), after a new one and when a resumed
     /// run starts (its list is what its checkpoint held). By default dropped.
     virtual void warnings(const std::vector<RunWarning>& all) { (void)all; }
-    /// A checkpoint with its contacts, void cells and the running peak: the runner calls this
-    /// one. By default it hands the checkpoint (with its identity) and its void cells to the
-    /// calls above and drops the contacts and the running peak; the run file stores it all.
-    virtual void checkpoint(const CheckpointData& data) {
-        checkpoint(data.name, *data.state, data.runnerState, data.identity);
-        if (data.voidCells) {
-            voidCells(data.name, *data.voidCells);
-        }
-    }
 };
 
 } // namespace grainlab
