@@ -427,9 +427,7 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
         const std::string at =
             top.has("test") && top.at("test").is_array() ? fmt::format("test[{}].", k) : "test.";
         if (t.kind == LoadingPath::Kind::Probes && t.start != LoadingPath::Start::End) {
-            const bool afterMonotonic = k > 0 &&
-                                        config.tests[k - 1].kind != LoadingPath::Kind::Probes &&
-                                        config.tests[k - 1].kind != LoadingPath::Kind::Cyclic;
+            const bool afterMonotonic = k > 0 && isMonotonicKind(config.tests[k - 1].kind);
             if (!afterMonotonic) {
                 throw ExperimentFileError(
                     sourceName, at + "start",

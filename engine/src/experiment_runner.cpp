@@ -211,15 +211,22 @@ bool ExperimentRunner::finishedAt(const std::string& runnerState) {
     return nlohmann::json::parse(runnerState).at("phase").get<int>() == int(StageKind::Done);
 }
 
-std::string ExperimentRunner::runningPeakCheckpoint(const std::string& runnerState) {
+namespace {
+
+/// The checkpoint that keeps the state named by the runner state's `key` ("" when none).
+std::string keptIn(const std::string& runnerState, const char* key) {
     const nlohmann::json j = nlohmann::json::parse(runnerState);
-    return j.contains("peak") ? j.at("peak").at("kept_in").get<std::string>() : std::string();
+    return j.contains(key) ? j.at(key).at("kept_in").get<std::string>() : std::string();
+}
+
+} // namespace
+
+std::string ExperimentRunner::runningPeakCheckpoint(const std::string& runnerState) {
+    return keptIn(runnerState, "peak");
 }
 
 std::string ExperimentRunner::probeStartCheckpoint(const std::string& runnerState) {
-    const nlohmann::json j = nlohmann::json::parse(runnerState);
-    return j.contains("probe_start") ? j.at("probe_start").at("kept_in").get<std::string>()
-                                     : std::string();
+    return keptIn(runnerState, "probe_start");
 }
 
 std::map<std::string, std::size_t>

@@ -43,6 +43,10 @@ constexpr double kMaxStrain = 0.5;
 
 } // namespace
 
+bool isMonotonicKind(LoadingPath::Kind kind) {
+    return kind != Kind::Cyclic && kind != Kind::Probes;
+}
+
 const char* loadingKindName(LoadingPath::Kind kind) {
     return kKindNames[std::size_t(kind)].c_str();
 }

@@ -55,6 +55,9 @@ struct LoadingPath {
 
 /// The name of a kind as written in files: "drained", "constant_volume", ...
 const char* loadingKindName(LoadingPath::Kind kind);
+/// A test that loads one way to its target strain (drained, constant volume, constant p, a
+/// stress path), in compression or extension; not cyclic, not probes.
+bool isMonotonicKind(LoadingPath::Kind kind);
 
 /// Reads the optional "test" object of `experiment` (a section that lists "test" among its
 /// keys). Absent: a drained test, exactly the behaviour of a file without it. Refuses unknown

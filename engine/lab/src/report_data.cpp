@@ -283,18 +283,6 @@ std::optional<LinearFit> fitOfTest(const SeriesTable& t) {
 
 } // namespace
 
-bool isCyclicTable(const SeriesTable& t) {
-    return std::find(t.stageKinds.begin(), t.stageKinds.end(), "cyclic") != t.stageKinds.end();
-}
-
-bool isProbesTable(const SeriesTable& t) {
-    return std::find(t.stageKinds.begin(), t.stageKinds.end(), "probes") != t.stageKinds.end();
-}
-
-bool isMonotonicTable(const SeriesTable& t) {
-    return !isCyclicTable(t) && !isProbesTable(t);
-}
-
 std::optional<std::vector<std::array<double, 2>>> probeResponses(const SeriesTable& t,
                                                                  bool complete) {
     const std::vector<std::size_t> rows = shearRows(t);

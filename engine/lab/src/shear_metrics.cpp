@@ -1,5 +1,6 @@
 #include "grainlab/shear_metrics.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -83,6 +84,18 @@ Curve shearCurve(const SeriesTable& test, const std::string& column) {
     return c;
 }
 
+bool isCyclicTable(const SeriesTable& t) {
+    return std::find(t.stageKinds.begin(), t.stageKinds.end(), "cyclic") != t.stageKinds.end();
+}
+
+bool isProbesTable(const SeriesTable& t) {
+    return std::find(t.stageKinds.begin(), t.stageKinds.end(), "probes") != t.stageKinds.end();
+}
+
+bool isMonotonicTable(const SeriesTable& t) {
+    return !isCyclicTable(t) && !isProbesTable(t);
+}
+
 ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
     ShearMetrics m;
     if (!test.rows.empty()) {
@@ -99,11 +112,8 @@ ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
     // A test in extension (eps1 < 0 at its end): its peak is the largest -q (or -q/p), and its
     // values at a metric strain are at eps1 = -strain.
     // (Cyclic tests and probes go both ways: never mirrored.)
-    const std::string lastKind =
-        test.stageKinds.size() == test.rows.size() ? test.stageKinds[rows.back()] : "shear";
-    const bool oneWay = lastKind != "cyclic" && lastKind != "probes";
     const double sign =
-        oneWay && eps1 >= 0 && test.rows[rows.back()][std::size_t(eps1)] < 0 ? -1.0 : 1.0;
+        isMonotonicTable(test) && eps1 >= 0 && test.rows[rows.back()][std::size_t(eps1)] < 0 ? -1.0 : 1.0;
     const auto shearCurve = [&](const std::string& column) {
         Curve c = grainlab::shearCurve(test, column);
         for (double& x : c.x) {

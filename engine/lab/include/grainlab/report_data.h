@@ -14,6 +14,7 @@
 
 #include "grainlab/critical_state.h"
 #include "grainlab/series.h"
+#include "grainlab/shear_metrics.h"
 #include "grainlab/statistics.h"
 
 namespace grainlab {
@@ -73,13 +74,6 @@ struct ReportOptions {
     double dilatancyWindow = 0.005; ///< the eps1 window of the smoothed dilatancy index [-]
 };
 
-/// True for a table whose test rows are a cyclic test's (its eps1 goes back and forth: no curve
-/// against eps1 on a common grid, no steady end).
-bool isCyclicTable(const SeriesTable& t);
-/// True for a table of stress probes (a start, a zero probe, one record per probe).
-bool isProbesTable(const SeriesTable& t);
-/// Neither cyclic nor probes: a test whose records follow eps1 one way.
-bool isMonotonicTable(const SeriesTable& t);
 
 /// The responses of a probes table: each probe's (d sigma11, d sigma22) minus the zero probe's
 /// (rows: the start, the zero probe, the K probes); nothing when K is not even and >= 4. With

@@ -54,6 +54,14 @@ struct ShearMetrics {
     std::optional<double> lowestPressureRatio; ///< min p′/p0 over the test (p0 its first) [-]
 };
 
+/// True for a table whose test rows are a cyclic test's (its eps1 goes back and forth: no curve
+/// against eps1 on a common grid, no steady end).
+bool isCyclicTable(const SeriesTable& t);
+/// True for a table of stress probes (a start, a zero probe, one record per probe).
+bool isProbesTable(const SeriesTable& t);
+/// Neither cyclic nor probes: a test whose records follow eps1 one way.
+bool isMonotonicTable(const SeriesTable& t);
+
 /// The metrics of one test recorded at confining pressure `confiningPressure` [Pa]. Values the
 /// test does not reach (it was sheared less far, or has no shear rows) are left empty.
 ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure);
