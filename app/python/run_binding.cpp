@@ -115,8 +115,7 @@ bool advance(PyRunner& r, std::int64_t steps) {
 
 /// Plays the experiment to its end in chunks, calling `progress` after each; a callback that
 /// returns False stops the run (a checkpoint "interrupted" in a run folder), as Ctrl-C does.
-bool play(PyRunner& r, const std::function<py::object(py::dict)>& progress,
-          std::int64_t chunk) {
+bool play(PyRunner& r, const std::function<py::object(py::dict)>& progress, std::int64_t chunk) {
     if (chunk < 1) {
         throw std::invalid_argument(fmt::format("chunk {}: must be >= 1 step", chunk));
     }
@@ -209,7 +208,9 @@ py::dict storedContactsDict(const StoredContacts& c) {
 
 } // namespace
 
-void bindRuns(py::module_& m) {
+namespace {
+
+void bindRunner(py::module_& m) {
     py::class_<PyRunner>(m, "Runner", R"doc(
 An experiment played stage by stage, by the runner `grainlab run` uses.
 
@@ -218,8 +219,8 @@ the run folder exactly as `grainlab run --out FOLDER` does (run file, series CSV
 and Runner.resume(FOLDER) continues one. advance(n) releases the GIL. Use it as a context
 manager, or call close(): a finished run's files are then closed, an unfinished one keeps a
 checkpoint "interrupted" to resume from.)doc")
-        .def(py::init([](const ExperimentConfig& config, std::optional<std::string> out,
-                         bool force, int threads) {
+        .def(py::init([](const ExperimentConfig& config, std::optional<std::string> out, bool force,
+                         int threads) {
                  if (threads < 0) {
                      throw std::invalid_argument(
                          fmt::format("threads {}: must be >= 0 (0: as the file says)", threads));
@@ -257,8 +258,7 @@ checkpoint "interrupted" to resume from.)doc")
         .def("advance", &advance, py::arg("steps"),
              "Advances at most `steps` steps (GIL released); False once the experiment is "
              "finished.")
-        .def("run", &play, py::arg("progress") = nullptr, py::kw_only(),
-             py::arg("chunk") = 1000,
+        .def("run", &play, py::arg("progress") = nullptr, py::kw_only(), py::arg("chunk") = 1000,
              R"doc(Plays the experiment to its end in chunks of `chunk` steps, calling
 progress(p) after each with a dict (stage, kind, test, pressure, step, axial_strain, fraction,
 finished). A callback returning False stops the run (in a run folder: a checkpoint
@@ -295,7 +295,8 @@ finished). A callback returning False stops the run (in a run folder: a checkpoi
             "A new Simulation from a copy of the current state (stepping it leaves the run "
             "alone).")
         .def(
-            "tables", [](PyRunner& r) {
+            "tables",
+            [](PyRunner& r) {
                 py::list out;
                 for (const SeriesTable& t : r.runner().series()) {
                     out.append(tableDict(t));
@@ -325,7 +326,9 @@ finished). A callback returning False stops the run (in a run folder: a checkpoi
                 r.usable().checkpointNow(name);
             },
             py::arg("name"), "Writes a checkpoint of now into the run file.");
+}
 
+void bindRunFolder(py::module_& m) {
     py::class_<PyRunFolder>(m, "RunFolder", R"doc(
 A run folder (or its run.h5) read back: the experiment, every test's series, the checkpoints
 with the state, contacts and void cells stored in each, the compacted samples, the warnings.
@@ -348,8 +351,9 @@ on (what is read is what was flushed).)doc")
             "The experiment the run played.")
         .def_property_readonly("software_version",
                                [](const PyRunFolder& f) { return readSoftwareVersion(f.runFile); })
-        .def_property_readonly("tests", [](const PyRunFolder& f) { return listTests(f.runFile); },
-                               "Test (series) names in the order they were first recorded.")
+        .def_property_readonly(
+            "tests", [](const PyRunFolder& f) { return listTests(f.runFile); },
+            "Test (series) names in the order they were first recorded.")
         .def_property_readonly(
             "samples", [](const PyRunFolder& f) { return listSamples(f.runFile); },
             "Pressures [Pa] of the compacted samples.")
@@ -422,6 +426,13 @@ on (what is read is what was flushed).)doc")
         .def("__repr__", [](const PyRunFolder& f) {
             return fmt::format("<grainlab.RunFolder '{}'>", f.folder);
         });
+}
+
+} // namespace
+
+void bindRuns(py::module_& m) {
+    bindRunner(m);
+    bindRunFolder(m);
 }
 
 } // namespace grainlab::python

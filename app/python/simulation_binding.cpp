@@ -72,9 +72,8 @@ py::array numericArray(const py::object& value, const char* name) {
     }
     const char kind = a.dtype().kind();
     if (kind != 'f' && kind != 'i' && kind != 'u') {
-        throw py::type_error(fmt::format(
-            "{}: dtype {} is not a real number type (float or int)", name,
-            py::str(a.dtype()).cast<std::string>()));
+        throw py::type_error(fmt::format("{}: dtype {} is not a real number type (float or int)",
+                                         name, py::str(a.dtype()).cast<std::string>()));
     }
     return a;
 }
@@ -106,8 +105,8 @@ PySimulation& usable(PySimulation& s) {
 
 void step(PySimulation& s, std::int64_t steps) {
     if (steps < 0) {
-        throw std::invalid_argument(fmt::format("step({}): the number of steps must be >= 0",
-                                                steps));
+        throw std::invalid_argument(
+            fmt::format("step({}): the number of steps must be >= 0", steps));
     }
     usable(s);
     s.busy.store(true);
@@ -272,19 +271,11 @@ py::dict contactsDict(const ContactNetwork& net) {
 PySimulation::PySimulation(SimulationState state)
     : sim(std::make_unique<Simulation>(std::move(state))), referenceCell(sim->cell()) {}
 
-void bindSimulation(py::module_& m) {
-    py::class_<PySimulation>(m, "Simulation", R"doc(
-The engine, stepped from Python: grains in a deforming periodic cell (docs/physics.md).
+namespace {
 
-Make one with Simulation.from_experiment(experiment) (the generated assembly a run starts from)
-or RunFolder.simulation(checkpoint=...) / RunFolder.simulation(sample=pressure). step(n)
-releases the GIL: other Python threads run meanwhile, and two simulations step in parallel on
-two threads with the same bits as one after the other. One thread drives one simulation.
-
-Arrays: x1, x2, theta, v1, v2, omega and shape are live read-only views of the engine's arrays
-(no copy): they always show the current state, also after step(), and stay valid as long as
-the Simulation. Every other array (positions, contacts(), void_cells(), ...) is a copy made by
-the call.)doc")
+/// Making one, stepping it, and its state and arrays.
+void bindSimulationState(py::class_<PySimulation>& simulation) {
+    simulation
         .def_static(
             "from_experiment",
             [](const ExperimentConfig& config) {
@@ -298,13 +289,12 @@ the call.)doc")
         .def("step", &step, py::arg("n") = 1,
              "Advances n time steps (GIL released). Raises SimulationError on blow-up; the "
              "simulation then refuses to step again.")
-        .def_property_readonly("step_count",
-                               [](PySimulation& s) { return s.sim->stepCount(); },
-                               "Steps since the state was generated.")
-        .def_property_readonly("time", [](PySimulation& s) { return s.sim->time(); },
-                               "Simulated time [s].")
-        .def_property_readonly("grain_count",
-                               [](PySimulation& s) { return s.sim->grainCount(); })
+        .def_property_readonly(
+            "step_count", [](PySimulation& s) { return s.sim->stepCount(); },
+            "Steps since the state was generated.")
+        .def_property_readonly(
+            "time", [](PySimulation& s) { return s.sim->time(); }, "Simulated time [s].")
+        .def_property_readonly("grain_count", [](PySimulation& s) { return s.sim->grainCount(); })
         .def_property_readonly(
             "time_step", [](PySimulation& s) { return s.sim->stateRef().parameters.timeStep; },
             "[s]")
@@ -315,33 +305,58 @@ the call.)doc")
             "failure", [](PySimulation& s) { return s.failure; },
             "Why the simulation failed ('' while it has not).")
         .def_property_readonly(
-            "x1", [](py::object self) { return view(self.cast<PySimulation&>().sim->stateRef().grains.x1, self); },
+            "x1",
+            [](py::object self) {
+                return view(self.cast<PySimulation&>().sim->stateRef().grains.x1, self);
+            },
             "Grain centres along x1 (axial) [m], a live read-only view.")
         .def_property_readonly(
-            "x2", [](py::object self) { return view(self.cast<PySimulation&>().sim->stateRef().grains.x2, self); },
+            "x2",
+            [](py::object self) {
+                return view(self.cast<PySimulation&>().sim->stateRef().grains.x2, self);
+            },
             "Grain centres along x2 [m], a live read-only view.")
         .def_property_readonly(
-            "theta", [](py::object self) { return view(self.cast<PySimulation&>().sim->stateRef().grains.theta, self); },
+            "theta",
+            [](py::object self) {
+                return view(self.cast<PySimulation&>().sim->stateRef().grains.theta, self);
+            },
             "Orientations of the grains' long axes from x1 [rad], a live read-only view.")
         .def_property_readonly(
-            "v1", [](py::object self) { return view(self.cast<PySimulation&>().sim->stateRef().grains.v1, self); },
+            "v1",
+            [](py::object self) {
+                return view(self.cast<PySimulation&>().sim->stateRef().grains.v1, self);
+            },
             "Fluctuating velocities along x1 [m/s] (the cell's affine motion excluded), a view.")
         .def_property_readonly(
-            "v2", [](py::object self) { return view(self.cast<PySimulation&>().sim->stateRef().grains.v2, self); },
+            "v2",
+            [](py::object self) {
+                return view(self.cast<PySimulation&>().sim->stateRef().grains.v2, self);
+            },
             "Fluctuating velocities along x2 [m/s], a live read-only view.")
         .def_property_readonly(
-            "omega", [](py::object self) { return view(self.cast<PySimulation&>().sim->stateRef().grains.omega, self); },
+            "omega",
+            [](py::object self) {
+                return view(self.cast<PySimulation&>().sim->stateRef().grains.omega, self);
+            },
             "Angular velocities [rad/s], a live read-only view.")
         .def_property_readonly(
-            "shape", [](py::object self) { return view(self.cast<PySimulation&>().sim->stateRef().grains.shape, self); },
+            "shape",
+            [](py::object self) {
+                return view(self.cast<PySimulation&>().sim->stateRef().grains.shape, self);
+            },
             "Each grain's index into the shape table (widths, heights), a live read-only view.")
         .def_property_readonly(
             "positions",
-            [](PySimulation& s) { return pairs(s.sim->stateRef().grains.x1, s.sim->stateRef().grains.x2); },
+            [](PySimulation& s) {
+                return pairs(s.sim->stateRef().grains.x1, s.sim->stateRef().grains.x2);
+            },
             "Grain centres, an (N, 2) copy [m] (unwrapped: they may lie outside the cell).")
         .def_property_readonly(
             "velocities",
-            [](PySimulation& s) { return pairs(s.sim->stateRef().grains.v1, s.sim->stateRef().grains.v2); },
+            [](PySimulation& s) {
+                return pairs(s.sim->stateRef().grains.v1, s.sim->stateRef().grains.v2);
+            },
             "Fluctuating velocities, an (N, 2) copy [m/s].")
         .def_property_readonly(
             "widths",
@@ -365,12 +380,14 @@ the call.)doc")
                 return copyOf(h);
             },
             "Grain heights H (short axis) [m], a copy; H/W is the aspect ratio.")
-        .def_property_readonly("masses", [](PySimulation& s) { return copyOf(s.sim->grainMass()); },
-                               "Grain masses [kg] (unit thickness), a copy.")
-        .def_property_readonly("cell", [](PySimulation& s) { return cellMatrix(s.sim->cell()); },
-                               "The cell matrix h (columns: the cell vectors) [m], a copy.")
-        .def_property_readonly("cell_area", [](PySimulation& s) { return s.sim->cellArea(); },
-                               "[m^2]")
+        .def_property_readonly(
+            "masses", [](PySimulation& s) { return copyOf(s.sim->grainMass()); },
+            "Grain masses [kg] (unit thickness), a copy.")
+        .def_property_readonly(
+            "cell", [](PySimulation& s) { return cellMatrix(s.sim->cell()); },
+            "The cell matrix h (columns: the cell vectors) [m], a copy.")
+        .def_property_readonly(
+            "cell_area", [](PySimulation& s) { return s.sim->cellArea(); }, "[m^2]")
         .def_property_readonly(
             "stress",
             [](PySimulation& s) {
@@ -382,7 +399,12 @@ the call.)doc")
                 w(1, 1) = st.s22;
                 return out;
             },
-            "The Love-Weber stress (compression positive), 2x2 [Pa].")
+            "The Love-Weber stress (compression positive), 2x2 [Pa].");
+}
+
+/// Driving it between steps, and what it measures.
+void bindSimulationControls(py::class_<PySimulation>& simulation) {
+    simulation
         .def(
             "axis",
             [](PySimulation& s, int axis) {
@@ -441,9 +463,9 @@ of that reference length); 'stress': sigma_ii held at `stress` [Pa] by the servo
                 if (!velocities.is_none()) {
                     const py::array a = numericArray(velocities, "velocities");
                     if (a.ndim() != 2 || a.shape(0) != py::ssize_t(n) || a.shape(1) != 2) {
-                        throw std::invalid_argument(fmt::format(
-                            "velocities: shape {}; must be ({}, 2), one row per grain",
-                            shapeText(a), n));
+                        throw std::invalid_argument(
+                            fmt::format("velocities: shape {}; must be ({}, 2), one row per grain",
+                                        shapeText(a), n));
                     }
                     const auto converted = asDoubles(a);
                     const auto v = converted.unchecked<2>();
@@ -455,9 +477,9 @@ of that reference length); 'stress': sigma_ii held at `stress` [Pa] by the servo
                 if (!omega.is_none()) {
                     const py::array a = numericArray(omega, "omega");
                     if (a.ndim() != 1 || a.shape(0) != py::ssize_t(n)) {
-                        throw std::invalid_argument(fmt::format(
-                            "omega: shape {}; must be ({},), one value per grain", shapeText(a),
-                            n));
+                        throw std::invalid_argument(
+                            fmt::format("omega: shape {}; must be ({},), one value per grain",
+                                        shapeText(a), n));
                     }
                     const auto converted = asDoubles(a);
                     const auto o = converted.unchecked<1>();
@@ -514,6 +536,25 @@ the test's first record) are 0 here: Runner.measures() gives them as a run recor
                                (s.referenceCell[0] - s.sim->cell()[0]) / s.referenceCell[0],
                                s.failure.empty() ? "" : ", failed");
         });
+}
+
+} // namespace
+
+void bindSimulation(py::module_& m) {
+    py::class_<PySimulation> simulation(m, "Simulation", R"doc(
+The engine, stepped from Python: grains in a deforming periodic cell (docs/physics.md).
+
+Make one with Simulation.from_experiment(experiment) (the generated assembly a run starts from)
+or RunFolder.simulation(checkpoint=...) / RunFolder.simulation(sample=pressure). step(n)
+releases the GIL: other Python threads run meanwhile, and two simulations step in parallel on
+two threads with the same bits as one after the other. One thread drives one simulation.
+
+Arrays: x1, x2, theta, v1, v2, omega and shape are live read-only views of the engine's arrays
+(no copy): they always show the current state, also after step(), and stay valid as long as
+the Simulation. Every other array (positions, contacts(), void_cells(), ...) is a copy made by
+the call.)doc");
+    bindSimulationState(simulation);
+    bindSimulationControls(simulation);
 }
 
 } // namespace grainlab::python

@@ -246,6 +246,105 @@ std::string fileStem(const std::string& path) {
     return name.empty() ? "experiment" : name;
 }
 
+/// The grain shapes the file implies, each derived quantity finite: a width is blamed when its
+/// disk is already out of range, the shape's ratio when only the oval is, the density when only
+/// the masses are.
+std::vector<OvalShape> grainShapes(const JsonSection& top, const ExperimentConfig& config,
+                                   const std::string& sourceName) {
+    const SimulationParameters& p = config.parameters;
+    std::vector<OvalShape> shapes;
+    const std::string ratioKey = config.assembly.closure == OvalClosure::EndRadiusRatio
+                                     ? "grains.end_radius_ratio"
+                                     : "grains.aspect_ratio";
+    const auto refuseShape = [&](const std::string& key, const std::string& why) {
+        throw ExperimentFileError(sourceName, key, fmt::format("{}: {}", key, why));
+    };
+    for (std::size_t i = 0; i < config.assembly.widths.size(); ++i) {
+        const double w = config.assembly.widths[i];
+        const std::string widthKey = top.has("grains") && top.at("grains").contains("widths")
+                                         ? fmt::format("grains.widths[{}]", i)
+                                     : i + 1 == config.assembly.widths.size() ? "grains.width_max"
+                                                                              : "grains.width_min";
+        OvalShape disk;
+        try {
+            disk = makeOval(w, 1.0);
+        } catch (const std::invalid_argument& e) {
+            refuseShape(widthKey, fmt::format("no valid grain of width {} m: {}", w, e.what()));
+        }
+        // The width alone (unit density): a density that leaves no finite mass is blamed below.
+        if (!finiteShape(disk, 1.0)) {
+            refuseShape(widthKey,
+                        fmt::format("a grain of width {} m has no finite area, mass and moment of "
+                                    "inertia; widths must be in [{}, {}] m",
+                                    w, kMinGrainWidth, kMaxGrainWidth));
+        }
+        try {
+            shapes.push_back(makeOval(w, config.assembly.aspectRatio, config.assembly.closure,
+                                      config.assembly.endRadiusRatio));
+        } catch (const std::invalid_argument& e) {
+            refuseShape(ratioKey, fmt::format("no valid oval: {}", e.what()));
+        }
+        if (!finiteShape(shapes.back(), 1.0)) {
+            refuseShape(ratioKey, fmt::format("the oval of width {} m has non-finite or zero arc "
+                                              "radii, area or moment of inertia; every derived "
+                                              "quantity must be finite (use a larger ratio)",
+                                              w));
+        }
+        if (!finiteShape(shapes.back(), p.density)) {
+            refuseShape("material.density",
+                        fmt::format("density {} kg/m^3 gives a grain of width {} m no finite "
+                                    "mass or moment of inertia",
+                                    p.density, w));
+        }
+    }
+    return shapes;
+}
+
+/// What the tests' order must satisfy (probes from a strain or a peak follow a monotonic test),
+/// and their keys that depend on the shear section.
+void checkTestOrder(const JsonSection& top, const ExperimentConfig& config,
+                    const std::string& sourceName) {
+    for (std::size_t k = 0; k < config.tests.size(); ++k) {
+        const LoadingPath& t = config.tests[k];
+        const std::string at =
+            top.has("test") && top.at("test").is_array() ? fmt::format("test[{}].", k) : "test.";
+        if (t.kind == LoadingPath::Kind::Probes && t.start != LoadingPath::Start::End) {
+            const bool afterMonotonic = k > 0 && isMonotonicKind(config.tests[k - 1].kind);
+            if (!afterMonotonic) {
+                throw ExperimentFileError(
+                    sourceName, at + "start",
+                    fmt::format("{}start = \"{}\": probes from a strain or the peak of a test must "
+                                "follow that test in the list, and it must be drained, "
+                                "constant_volume, constant_p or stress_path (\"end\" starts "
+                                "anywhere)",
+                                at, t.start == LoadingPath::Start::Peak ? "peak" : "strain"));
+            }
+            if (t.start == LoadingPath::Start::Strain &&
+                !(t.startStrain <= config.shear.targetAxialStrain)) {
+                throw ExperimentFileError(
+                    sourceName, at + "start_strain",
+                    fmt::format("{}start_strain = {:g}: must be in (0, {:g}], the test's "
+                                "shear.target_axial_strain",
+                                at, t.startStrain, config.shear.targetAxialStrain));
+            }
+        }
+        if (t.kind == LoadingPath::Kind::Probes && t.plane == LoadingPath::Plane::Stress) {
+            throw ExperimentFileError(sourceName, at + "plane",
+                                      fmt::format("{}plane = \"stress\": not available in this "
+                                                  "version (available: \"strain\")",
+                                                  at));
+        }
+        if (t.kind == LoadingPath::Kind::Cyclic && t.control == LoadingPath::Control::Strain &&
+            !(config.shear.axialStrainPerStep <= t.amplitude)) {
+            throw ExperimentFileError(
+                sourceName, at + "amplitude",
+                fmt::format("{}amplitude = {:g}: must be at least shear.axial_strain_per_step "
+                            "({:g}), the strain of one step",
+                            at, t.amplitude, config.shear.axialStrainPerStep));
+        }
+    }
+}
+
 } // namespace
 
 ExperimentConfig parseExperimentText(const std::string& text, const std::string& sourceName) {
@@ -363,56 +462,8 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
     p.friction = config.compaction.friction;
     p.servo.maxStrainRate = config.compaction.maxStrainRate;
 
-    // The shapes the file implies, and the time step against their stable limit (docs/physics.md).
-    // Each derived quantity must be finite: a width is blamed when its disk is already out of
-    // range, the shape's ratio when only the oval is, the density when only the masses are.
-    std::vector<OvalShape> shapes;
-    const std::string ratioKey = config.assembly.closure == OvalClosure::EndRadiusRatio
-                                     ? "grains.end_radius_ratio"
-                                     : "grains.aspect_ratio";
-    const auto refuseShape = [&](const std::string& key, const std::string& why) {
-        throw ExperimentFileError(sourceName, key, fmt::format("{}: {}", key, why));
-    };
-    for (std::size_t i = 0; i < config.assembly.widths.size(); ++i) {
-        const double w = config.assembly.widths[i];
-        const std::string widthKey = top.has("grains") && top.at("grains").contains("widths")
-                                         ? fmt::format("grains.widths[{}]", i)
-                                     : i + 1 == config.assembly.widths.size() ? "grains.width_max"
-                                                                              : "grains.width_min";
-        OvalShape disk;
-        try {
-            disk = makeOval(w, 1.0);
-        } catch (const std::invalid_argument& e) {
-            refuseShape(widthKey, fmt::format("no valid grain of width {} m: {}", w, e.what()));
-        }
-        // The width alone (unit density): a density that leaves no finite mass is blamed below.
-        if (!finiteShape(disk, 1.0)) {
-            refuseShape(widthKey,
-                        fmt::format("a grain of width {} m has no finite area, mass and moment of "
-                                    "inertia; widths must be in [{}, {}] m",
-                                    w, kMinGrainWidth, kMaxGrainWidth));
-        }
-        try {
-            shapes.push_back(makeOval(w, config.assembly.aspectRatio, config.assembly.closure,
-                                      config.assembly.endRadiusRatio));
-        } catch (const std::invalid_argument& e) {
-            refuseShape(ratioKey, fmt::format("no valid oval: {}", e.what()));
-        }
-        if (!finiteShape(shapes.back(), 1.0)) {
-            refuseShape(ratioKey, fmt::format("the oval of width {} m has non-finite or zero arc "
-                                              "radii, area or moment of inertia; every derived "
-                                              "quantity must be finite (use a larger ratio)",
-                                              w));
-        }
-        if (!finiteShape(shapes.back(), p.density)) {
-            refuseShape("material.density",
-                        fmt::format("density {} kg/m^3 gives a grain of width {} m no finite "
-                                    "mass or moment of inertia",
-                                    p.density, w));
-        }
-    }
     try {
-        checkTimeStep(shapes, p);
+        checkTimeStep(grainShapes(top, config, sourceName), p);
     } catch (const std::invalid_argument& e) {
         throw ExperimentFileError(sourceName, "time_step",
                                   fmt::format("time_step = {}: {}", p.timeStep, e.what()));
@@ -422,45 +473,7 @@ ExperimentConfig parseExperimentText(const std::string& text, const std::string&
     checkLateralServoFollows(shear, config.shear, p.timeStep);
     checkServoInterval(servo, config);
     config.tests = readLoadingPaths(top);
-    for (std::size_t k = 0; k < config.tests.size(); ++k) {
-        const LoadingPath& t = config.tests[k];
-        const std::string at =
-            top.has("test") && top.at("test").is_array() ? fmt::format("test[{}].", k) : "test.";
-        if (t.kind == LoadingPath::Kind::Probes && t.start != LoadingPath::Start::End) {
-            const bool afterMonotonic = k > 0 && isMonotonicKind(config.tests[k - 1].kind);
-            if (!afterMonotonic) {
-                throw ExperimentFileError(
-                    sourceName, at + "start",
-                    fmt::format("{}start = \"{}\": probes from a strain or the peak of a test must "
-                                "follow that test in the list, and it must be drained, "
-                                "constant_volume, constant_p or stress_path (\"end\" starts "
-                                "anywhere)",
-                                at, t.start == LoadingPath::Start::Peak ? "peak" : "strain"));
-            }
-            if (t.start == LoadingPath::Start::Strain &&
-                !(t.startStrain <= config.shear.targetAxialStrain)) {
-                throw ExperimentFileError(
-                    sourceName, at + "start_strain",
-                    fmt::format("{}start_strain = {:g}: must be in (0, {:g}], the test's "
-                                "shear.target_axial_strain",
-                                at, t.startStrain, config.shear.targetAxialStrain));
-            }
-        }
-        if (t.kind == LoadingPath::Kind::Probes && t.plane == LoadingPath::Plane::Stress) {
-            throw ExperimentFileError(sourceName, at + "plane",
-                                      fmt::format("{}plane = \"stress\": not available in this "
-                                                  "version (available: \"strain\")",
-                                                  at));
-        }
-        if (t.kind == LoadingPath::Kind::Cyclic && t.control == LoadingPath::Control::Strain &&
-            !(config.shear.axialStrainPerStep <= t.amplitude)) {
-            throw ExperimentFileError(
-                sourceName, at + "amplitude",
-                fmt::format("{}amplitude = {:g}: must be at least shear.axial_strain_per_step "
-                            "({:g}), the strain of one step",
-                            at, t.amplitude, config.shear.axialStrainPerStep));
-        }
-    }
+    checkTestOrder(top, config, sourceName);
     return config;
 }
 

@@ -164,6 +164,49 @@ void PlotPainter::paint(QPainter& painter, const QRectF& rect) const {
     }
 
     painter.setClipRect(area);
+    paintData(painter, rect, metrics);
+    painter.setClipping(false);
+
+    // Frame, tick labels, titles, legend.
+    painter.setPen(QPen(QColor(90, 90, 90), 1));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(area);
+    painter.setPen(QColor(40, 40, 40));
+    for (double t : xTicks) {
+        const double px = area.left() + (t - rx.lo) / (rx.hi - rx.lo) * area.width();
+        const QString s = tickLabel(xAxis.logarithmic ? std::pow(10, t) : t);
+        painter.drawText(QPointF(px - metrics.horizontalAdvance(s) / 2, area.bottom() + 16), s);
+    }
+    for (double t : yTicks) {
+        const double py = area.bottom() - (t - ry.lo) / (ry.hi - ry.lo) * area.height();
+        const QString s = tickLabel(yAxis.logarithmic ? std::pow(10, t) : t);
+        painter.drawText(QPointF(area.left() - 6 - metrics.horizontalAdvance(s), py + 4), s);
+    }
+    painter.drawText(QRectF(area.left(), area.bottom() + 24, area.width(), 24), Qt::AlignCenter,
+                     xAxis.title);
+    painter.save();
+    painter.translate(rect.left() + 14, area.center().y());
+    painter.rotate(-90);
+    painter.drawText(QRectF(-area.height() / 2, -10, area.height(), 20), Qt::AlignCenter,
+                     yAxis.title);
+    painter.restore();
+    if (!title.isEmpty()) {
+        QFont bold = font;
+        bold.setBold(true);
+        bold.setPointSizeF(10.5);
+        painter.setFont(bold);
+        painter.drawText(QRectF(rect.left(), rect.top() + 8, rect.width(), 24), Qt::AlignCenter,
+                         title);
+        painter.setFont(font);
+    }
+    paintLegend(painter, area, metrics);
+    painter.restore();
+}
+
+void PlotPainter::paintData(QPainter& painter, const QRectF& rect,
+                            const QFontMetricsF& metrics) const {
+    const QRectF area = plotArea(rect);
+    const Range rx = range(true), ry = range(false);
     // Horizontal bands.
     const auto yPixel = [&](double y) {
         const double v = yAxis.logarithmic ? (y > 0 ? std::log10(y) : ry.lo) : y;
@@ -251,40 +294,10 @@ void PlotPainter::paint(QPainter& painter, const QRectF& rect) const {
             painter.drawText(QPointF(box.left(), box.top() + metrics.ascent()), p.label);
         }
     }
-    painter.setClipping(false);
+}
 
-    // Frame, tick labels, titles, legend.
-    painter.setPen(QPen(QColor(90, 90, 90), 1));
-    painter.setBrush(Qt::NoBrush);
-    painter.drawRect(area);
-    painter.setPen(QColor(40, 40, 40));
-    for (double t : xTicks) {
-        const double px = area.left() + (t - rx.lo) / (rx.hi - rx.lo) * area.width();
-        const QString s = tickLabel(xAxis.logarithmic ? std::pow(10, t) : t);
-        painter.drawText(QPointF(px - metrics.horizontalAdvance(s) / 2, area.bottom() + 16), s);
-    }
-    for (double t : yTicks) {
-        const double py = area.bottom() - (t - ry.lo) / (ry.hi - ry.lo) * area.height();
-        const QString s = tickLabel(yAxis.logarithmic ? std::pow(10, t) : t);
-        painter.drawText(QPointF(area.left() - 6 - metrics.horizontalAdvance(s), py + 4), s);
-    }
-    painter.drawText(QRectF(area.left(), area.bottom() + 24, area.width(), 24), Qt::AlignCenter,
-                     xAxis.title);
-    painter.save();
-    painter.translate(rect.left() + 14, area.center().y());
-    painter.rotate(-90);
-    painter.drawText(QRectF(-area.height() / 2, -10, area.height(), 20), Qt::AlignCenter,
-                     yAxis.title);
-    painter.restore();
-    if (!title.isEmpty()) {
-        QFont bold = font;
-        bold.setBold(true);
-        bold.setPointSizeF(10.5);
-        painter.setFont(bold);
-        painter.drawText(QRectF(rect.left(), rect.top() + 8, rect.width(), 24), Qt::AlignCenter,
-                         title);
-        painter.setFont(font);
-    }
+void PlotPainter::paintLegend(QPainter& painter, const QRectF& area,
+                              const QFontMetricsF& metrics) const {
     double legendY = area.top() + 14;
     const auto legend = [&](const QColor& colour, const QString& text, bool band) {
         if (text.isEmpty()) {
@@ -308,7 +321,6 @@ void PlotPainter::paint(QPainter& painter, const QRectF& rect) const {
     for (const PlotCurve& c : curves) {
         legend(c.colour, c.label, false);
     }
-    painter.restore();
 }
 
 } // namespace grainlab::ui

@@ -13,6 +13,7 @@
 #include <QRectF>
 #include <QString>
 
+class QFontMetricsF;
 class QPainter;
 
 namespace grainlab::ui {
@@ -67,6 +68,11 @@ private:
     };
     Range range(bool xAxis) const;
     QRectF plotArea(const QRectF& rect) const;
+    /// The bands, the curves with their bands, the points with their error bars and labels
+    /// (clipped to the plot area by paint()).
+    void paintData(QPainter& painter, const QRectF& rect, const QFontMetricsF& metrics) const;
+    /// The legend of the bands and curves that have a label, at the plot area's top right.
+    void paintLegend(QPainter& painter, const QRectF& area, const QFontMetricsF& metrics) const;
 };
 
 } // namespace grainlab::ui
