@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "gui/main_window.h"
 #include "common/resources.h"
+#include "gui/main_window.h"
 
 namespace grainlab {
 
@@ -29,9 +29,7 @@ int runGui(int argc, char** argv, const std::string& experimentPath) {
     // (no OpenGL) works as well as a desktop one.
     ui::MainWindow window;
     const std::string path =
-        experimentPath.empty()
-            ? resourcePath("experiments/quick.json")
-            : experimentPath;
+        experimentPath.empty() ? resourcePath("experiments/quick.json") : experimentPath;
     QString error;
     if (!window.openExperiment(QString::fromStdString(path), &error)) {
         fmt::print(stderr, "grainlab: {}\n", error.toStdString());

@@ -128,6 +128,15 @@ void FolderCommand::setHooks(FolderCommandHooks hooks) {
     QObject::connect(row.stop, &QPushButton::clicked, view_, [this] { stop(); });
 }
 
+FolderCommandView::FolderWidgets FolderCommandView::makeFolderWidgets(const QString& buttonText,
+                                                                      const QString& hint) {
+    FolderWidgets w{new QLabel(QObject::tr("–")), new QPushButton(buttonText), new QLabel(hint)};
+    w.label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    w.hint->setWordWrap(true);
+    w.hint->setStyleSheet(QStringLiteral("color: gray"));
+    return w;
+}
+
 void FolderCommand::say(const QString& text) {
     status->setText(text);
 }

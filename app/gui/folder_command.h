@@ -213,6 +213,14 @@ public:
     QLabel* statusLabel() const { return run_.status; }
 
 protected:
+    /// The folder's label ("–" until one is chosen), its button and the grey hint below them.
+    struct FolderWidgets {
+        QLabel* label;
+        QPushButton* button;
+        QLabel* hint;
+    };
+    FolderWidgets makeFolderWidgets(const QString& buttonText, const QString& hint);
+
     /// Reads the folder with `scan` on the worker thread, then hands the result to `scanned`;
     /// a scan that threw puts its message in the status line.
     template <class Result>

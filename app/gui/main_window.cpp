@@ -23,6 +23,7 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 
+#include "common/resources.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/ui/charts_panel.h"
@@ -37,7 +38,6 @@
 #include "gui/report_job.h"
 #include "gui/study_window.h"
 #include "gui/window_run_folder.h"
-#include "common/resources.h"
 
 namespace grainlab::ui {
 namespace {

@@ -22,10 +22,10 @@
 #include <QMainWindow>
 #include <QTimer>
 
+#include "common/run_file_view.h"
 #include "grainlab/experiment.h"
 #include "gui/experiment_run.h"
 #include "gui/picture_budget.h"
-#include "common/run_file_view.h"
 #include "gui/simulation_controller.h"
 
 class QAction;
@@ -235,13 +235,13 @@ private:
     QTimer timer_;
     QTimer startingAssemblyTimer_; ///< spaces regenerations while parameters are typed
     SnapshotPtr startingAssembly_;
-    QElapsedTimer clock_;          ///< monotonic, for the picture budget
-    PictureBudget budget_;         ///< set by prepareRun() for each run
-    int runEngineThreads_ = 1;     ///< the engine threads of the current (or last) run
-    double pictureShare_ = 0;      ///< the chosen share of a core, 0: the rule
-    double pictureAtMs_ = -1e300;  ///< clock_ when the last running picture was taken
-    double pictureCostMs_ = 0;     ///< see pictureCostMs()
-    double pictureIntervalMs_ = 0; ///< see pictureIntervalMs()
+    QElapsedTimer clock_;               ///< monotonic, for the picture budget
+    PictureBudget budget_;              ///< set by prepareRun() for each run
+    int runEngineThreads_ = 1;          ///< the engine threads of the current (or last) run
+    double pictureShare_ = 0;           ///< the chosen share of a core, 0: the rule
+    double pictureAtMs_ = -1e300;       ///< clock_ when the last running picture was taken
+    double pictureCostMs_ = 0;          ///< see pictureCostMs()
+    double pictureIntervalMs_ = 0;      ///< see pictureIntervalMs()
     double pictureTakenIntervalMs_ = 0; ///< see runningPictureIntervalMs()
 
     SceneView* scene_;

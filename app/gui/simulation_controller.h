@@ -39,12 +39,12 @@ enum class RunState { Idle, Running, Paused, Finished, Failed };
 struct RunStatus {
     RunState state = RunState::Idle;
     RunProgress progress;
-    std::int64_t stepsDone = 0;     ///< steps advanced by this controller since start
-    double stepsPerSecond = 0;      ///< measured over the last publications
-    double strainPerSecond = 0;     ///< d eps1 / dt (wall clock) [1/s]
-    double etaSeconds = -1;         ///< from the rate of progress, -1 when unknown
-    double snapshotSeconds = 0;     ///< engine thread's wall time to copy the last snapshot [s]
-    double publishingSeconds = 0;   ///< the engine thread's total on running pictures [s]
+    std::int64_t stepsDone = 0;   ///< steps advanced by this controller since start
+    double stepsPerSecond = 0;    ///< measured over the last publications
+    double strainPerSecond = 0;   ///< d eps1 / dt (wall clock) [1/s]
+    double etaSeconds = -1;       ///< from the rate of progress, -1 when unknown
+    double snapshotSeconds = 0;   ///< engine thread's wall time to copy the last snapshot [s]
+    double publishingSeconds = 0; ///< the engine thread's total on running pictures [s]
     std::uint64_t runningPublications = 0; ///< the running pictures behind publishingSeconds
     double measureSeconds = 0;      ///< the finisher's time for the last snapshot's measures [s]
     std::uint64_t publications = 0; ///< snapshots published so far

@@ -75,7 +75,7 @@ private:
     std::int64_t stride_ = 1;
     double measureSeconds_ = 0; ///< see measureSeconds()
     std::size_t bytes_ = 0;
-    std::vector<Entry> entries_; ///< by increasing record
+    std::vector<Entry> entries_;   ///< by increasing record
     std::uint64_t generation_ = 0; ///< counts clear(): a snapshot finished after one is dropped
     SnapshotFinisher* finisher_ = nullptr;
 };

@@ -103,17 +103,15 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
     presetLabel_ = new QLabel;
     presetLabel_->setWordWrap(true);
     presetLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    folderLabel_ = new QLabel(tr("–"));
-    folderLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    folderButton_ = new QPushButton(tr("Open folder…"));
+    const FolderWidgets folder = makeFolderWidgets(
+        tr("Open folder…"),
+        tr("By default a new map goes to stability-<name> in the runs folder. A folder that holds "
+           "a map shows it at once, and Start continues it: finished cells are not redone."));
+    folderLabel_ = folder.label;
+    folderButton_ = folder.button;
     folderButton_->setToolTip(tr("A map folder to show and continue, or a new or empty folder "
                                  "for the map to start"));
     connect(folderButton_, &QPushButton::clicked, this, &StabilityView::chooseFolderDialog);
-    auto* folderHint = new QLabel(
-        tr("By default a new map goes to stability-<name> in the runs folder. A folder that holds "
-           "a map shows it at once, and Start continues it: finished cells are not redone."));
-    folderHint->setWordWrap(true);
-    folderHint->setStyleSheet(QStringLiteral("color: gray"));
 
     auto* files = new QGridLayout;
     files->addWidget(new QLabel(tr("Map:")), 0, 0);
@@ -122,7 +120,7 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
     files->addWidget(new QLabel(tr("Map folder:")), 1, 0);
     files->addWidget(folderLabel_, 1, 1, 1, 2);
     files->addWidget(folderButton_, 1, 3);
-    files->addWidget(folderHint, 2, 1, 1, 3);
+    files->addWidget(folder.hint, 2, 1, 1, 3);
     files->setColumnStretch(2, 1);
 
     xAxis_ = new QComboBox;

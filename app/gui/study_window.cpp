@@ -79,15 +79,13 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     fileLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     auto* openButton = new QPushButton(tr("Open study…"));
     connect(openButton, &QPushButton::clicked, this, &StudyWindow::openStudyDialog);
-    folderLabel_ = new QLabel(tr("–"));
-    folderLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    folderButton_ = new QPushButton(tr("Choose…"));
-    connect(folderButton_, &QPushButton::clicked, this, &StudyWindow::chooseFolderDialog);
-    auto* folderHint = new QLabel(
+    const FolderWidgets folder = makeFolderWidgets(
+        tr("Choose…"),
         tr("By default a folder named after the study beside the study file. A folder that "
            "already holds this study is continued: finished runs are not redone."));
-    folderHint->setWordWrap(true);
-    folderHint->setStyleSheet(QStringLiteral("color: gray"));
+    folderLabel_ = folder.label;
+    folderButton_ = folder.button;
+    connect(folderButton_, &QPushButton::clicked, this, &StudyWindow::chooseFolderDialog);
 
     auto* files = new QGridLayout;
     files->addWidget(new QLabel(tr("Study file:")), 0, 0);
@@ -96,7 +94,7 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     files->addWidget(new QLabel(tr("Study folder:")), 1, 0);
     files->addWidget(folderLabel_, 1, 1);
     files->addWidget(folderButton_, 1, 2);
-    files->addWidget(folderHint, 2, 1, 1, 2);
+    files->addWidget(folder.hint, 2, 1, 1, 2);
     files->setColumnStretch(1, 1);
 
     test_ = new QComboBox;
