@@ -199,8 +199,9 @@ void addExportCommands(CLI::App& app, VtkExportOptions& vtk, CheckpointPictureOp
     c.picture->add_option("--size", picture.size, "pixels of the square picture")
         ->check(CLI::Range(64, 8192))
         ->capture_default_str();
-    c.picture->add_option("--rotation-range", picture.rotationRange,
-                          "|rotation| [rad] at the ends of the colour scale")
+    c.picture
+        ->add_option("--rotation-range", picture.rotationRange,
+                     "|rotation| [rad] at the ends of the colour scale")
         ->check(CLI::Range(1e-6, 10.0))
         ->capture_default_str();
 }

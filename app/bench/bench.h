@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <string>
 
-#include "grainlab/simulation_state.h"
 #include "common/resources.h"
+#include "grainlab/simulation_state.h"
 
 namespace CLI {
 class App;

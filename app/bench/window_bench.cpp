@@ -388,15 +388,15 @@ void benchWindow(const BenchOptions& o, int threads) {
                    "rounds; target <= 5 %)\n",
                    v.name, v.last.openGL ? "OpenGL" : "QPainter", median(v.stepsPerSecond),
                    100.0 * median(v.slowdown));
-        fmt::print("      {:.1f} new pictures/s, {} snapshots published (copied by the engine thread "
-                   "in {:.2f} ms on average, the last measured by the snapshot thread in {:.2f} ms; "
-                   "copies took {:.1f} % of the engine thread's time),\n      {} kept for chart "
-                   "hover ({:.1f} MB); on the processor: engine thread {:.0f} %, GUI thread "
-                   "{:.0f} % of the time\n",
-                   median(v.pictures), v.last.publications, v.last.snapshotMs, v.last.measureMs,
-                   100.0 * v.last.publishingShare, v.last.kept,
-                   double(v.last.keptBytes) / (1 << 20), 100.0 * median(v.engineCpu),
-                   100.0 * median(v.guiCpu));
+        fmt::print(
+            "      {:.1f} new pictures/s, {} snapshots published (copied by the engine thread "
+            "in {:.2f} ms on average, the last measured by the snapshot thread in {:.2f} ms; "
+            "copies took {:.1f} % of the engine thread's time),\n      {} kept for chart "
+            "hover ({:.1f} MB); on the processor: engine thread {:.0f} %, GUI thread "
+            "{:.0f} % of the time\n",
+            median(v.pictures), v.last.publications, v.last.snapshotMs, v.last.measureMs,
+            100.0 * v.last.publishingShare, v.last.kept, double(v.last.keptBytes) / (1 << 20),
+            100.0 * median(v.engineCpu), 100.0 * median(v.guiCpu));
         fmt::print(
             "      the scene on the GUI thread: {:.1f} ms a new picture ({:.1f} ms preparing "
             "the snapshot, {:.1f} ms painting, {} paints); picture budget {:.0f} % of a "
@@ -542,9 +542,10 @@ void benchScene(const BenchOptions& o, int threads) {
     ui::SceneOptions fullDetail = options;
     fullDetail.overviewHalfWidth = 0.0;
     const FrameTimes full = painterFrameTimes(s, fullDetail, &prepareMs);
-    fmt::print("    QPainter renderer without the overview (every shape through QPainter): whole cell "
-               "{:.1f} ms ({:.1f} frames/s); the overview draws it {:.2f}x faster\n",
-               full.wholeMs, 1e3 / full.wholeMs, full.wholeMs / painter.wholeMs);
+    fmt::print(
+        "    QPainter renderer without the overview (every shape through QPainter): whole cell "
+        "{:.1f} ms ({:.1f} frames/s); the overview draws it {:.2f}x faster\n",
+        full.wholeMs, 1e3 / full.wholeMs, full.wholeMs / painter.wholeMs);
     const FrameTimes grainsOnly = painterFrameTimes(s, ui::SceneOptions{}, &prepareMs);
     fmt::print("    QPainter renderer, the window's default options (grains coloured by size, no "
                "overlays): whole cell {:.1f} ms ({:.1f} frames/s), zoomed x8 {:.1f} ms ({:.1f} "

@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "common/progress_bar.h"
 #include "cli/run_session.h"
+#include "common/progress_bar.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/simulation.h"
@@ -215,9 +215,9 @@ int runExperimentCommand(const RunOptions& options) {
         const std::string kept = session->lastCheckpoint();
         const std::string remedy = experimentRemedy(e);
         if (!remedy.empty()) {
-            const std::string experiment =
-                resume || options.experiment.empty() ? std::string("EXPERIMENT.json")
-                                                      : options.experiment;
+            const std::string experiment = resume || options.experiment.empty()
+                                               ? std::string("EXPERIMENT.json")
+                                               : options.experiment;
             fmt::print(stderr,
                        "grainlab run: error: {}\nThis stop comes from the experiment itself: a "
                        "resume would meet it again. In the experiment file (its text is also "

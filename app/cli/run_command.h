@@ -12,12 +12,12 @@
 namespace grainlab {
 
 struct RunOptions {
-    std::string experiment;  ///< experiment file (new run)
-    std::string out;         ///< output folder
-    std::string resume;      ///< output folder of a run to continue
-    int threads = 0;         ///< 0: as the experiment file says
-    bool force = false;      ///< replace an existing run in `out`
-    bool quiet = false;      ///< no progress bar
+    std::string experiment; ///< experiment file (new run)
+    std::string out;        ///< output folder
+    std::string resume;     ///< output folder of a run to continue
+    int threads = 0;        ///< 0: as the experiment file says
+    bool force = false;     ///< replace an existing run in `out`
+    bool quiet = false;     ///< no progress bar
 };
 
 int runExperimentCommand(const RunOptions& options);

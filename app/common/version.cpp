@@ -6,7 +6,9 @@
 
 namespace grainlab {
 
-std::string buildCommit() { return GRAINLAB_COMMIT; }
+std::string buildCommit() {
+    return GRAINLAB_COMMIT;
+}
 
 std::string versionText() {
     return fmt::format("GrainLab {} (commit {})", GRAINLAB_VERSION, buildCommit());

@@ -151,8 +151,8 @@ does not change: with_changes() (added in Python) gives a new, validated one.)do
             "Writes the experiment's JSON text to `path` (refuses an existing file unless "
             "overwrite=True).")
         .def("__repr__", [](const ExperimentConfig& c) {
-            return fmt::format("<grainlab.Experiment '{}': {} grains, seed {}, {} test(s)>",
-                               c.name, c.assembly.grainCount, c.assembly.seed, c.tests.size());
+            return fmt::format("<grainlab.Experiment '{}': {} grains, seed {}, {} test(s)>", c.name,
+                               c.assembly.grainCount, c.assembly.seed, c.tests.size());
         });
     m.def(
         "series_columns",
@@ -178,4 +178,3 @@ PYBIND11_MODULE(_grainlab, m) {
     grainlab::python::bindSimulation(m);
     grainlab::python::bindRuns(m);
 }
-

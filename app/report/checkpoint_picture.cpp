@@ -76,14 +76,14 @@ int runCheckpointPictureCommand(const CheckpointPictureOptions& o) {
     const QSize size(o.size, o.size);
     renderer.fitToCell(size);
     QString error;
-    if (!ui::exportFigure(QString::fromStdString(o.out), size,
-                          [&](QPainter& p, QSize s) { renderer.render(p, s); }, &error)) {
+    if (!ui::exportFigure(
+            QString::fromStdString(o.out), size,
+            [&](QPainter& p, QSize s) { renderer.render(p, s); }, &error)) {
         fmt::print(stderr, "grainlab export picture: {}\n", error.toStdString());
         return 1;
     }
     fmt::print("grainlab export picture: {} at eps1 = {:.6g} ({}), {} x {} pixels: {}\n", o.test,
-               snapshot->axialStrain, file.checkpoints[std::size_t(index)], o.size, o.size,
-               o.out);
+               snapshot->axialStrain, file.checkpoints[std::size_t(index)], o.size, o.size, o.out);
     return 0;
 }
 

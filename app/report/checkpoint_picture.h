@@ -9,15 +9,15 @@
 namespace grainlab {
 
 struct CheckpointPictureOptions {
-    std::string run;             ///< run folder or its run.h5
-    std::string test;            ///< e.g. "p015kPa"
-    double strain = 0.0;         ///< eps1 of the checkpoint wanted (the nearest is drawn)
-    std::string out;             ///< .png, .svg or .pdf; must not exist
+    std::string run;                    ///< run folder or its run.h5
+    std::string test;                   ///< e.g. "p015kPa"
+    double strain = 0.0;                ///< eps1 of the checkpoint wanted (the nearest is drawn)
+    std::string out;                    ///< .png, .svg or .pdf; must not exist
     std::string colouring = "rotation"; ///< rotation, size, coordination, load-bearing, uniform
     std::string chains = "strong";      ///< off, strong, all
     std::string voidCells = "off";      ///< off, valence, area
-    int size = 1000;             ///< pixels of the square picture
-    double rotationRange = 0.2;  ///< |rotation| at the ends of the colour scale [rad]
+    int size = 1000;                    ///< pixels of the square picture
+    double rotationRange = 0.2;         ///< |rotation| at the ends of the colour scale [rad]
 };
 
 /// Draws the picture; returns 0, or 2 with a message naming the file for input refused (no such

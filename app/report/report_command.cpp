@@ -34,7 +34,9 @@ std::string unitOf(const std::string& column) {
     return "-";
 }
 
-std::string number(double v) { return fmt::format("{:.9g}", v); }
+std::string number(double v) {
+    return fmt::format("{:.9g}", v);
+}
 
 /// The experiment without what may differ between the runs of one report (seed, name, text).
 nlohmann::json comparable(nlohmann::json e) {
@@ -115,8 +117,7 @@ LoadedRuns loadRuns(const std::vector<std::string>& folders) {
         const nlohmann::json experiment = nlohmann::json::parse(readExperimentText(runFile));
         if (i == 0) {
             first = experiment;
-        } else if (const std::string d =
-                       firstDifference(comparable(first), comparable(experiment));
+        } else if (const std::string d = firstDifference(comparable(first), comparable(experiment));
                    !d.empty()) {
             throw std::runtime_error(fmt::format(
                 "{} and {} are runs of different experiments (they differ at `{}`): a report "
@@ -212,13 +213,17 @@ std::string figureCsv(const ReportFigure& figure) {
 std::string headlineCsv(const std::vector<HeadlineRow>& rows, const PooledFitScatter& pooled) {
     static constexpr const char* kOneRun = "one run: no scatter";
     std::string out = csvLine({"number", "label", "test", "pressure [Pa]", "unit", "mean", "sd",
-                               "runs [-]", "published", "difference", "agrees",
-                               "beyond_scatter"});
-    const auto line = [&](const std::string& key, const std::string& label,
-                          const std::string& test, double pressure, const std::string& unit,
-                          const Scatter& s, const std::optional<PublishedValue>& published) {
-        std::vector<std::string> r{key, label, test, number(pressure), unit,
-                                   s.count ? number(s.mean) : "", s.count ? number(s.sd) : "",
+                               "runs [-]", "published", "difference", "agrees", "beyond_scatter"});
+    const auto line = [&](const std::string& key, const std::string& label, const std::string& test,
+                          double pressure, const std::string& unit, const Scatter& s,
+                          const std::optional<PublishedValue>& published) {
+        std::vector<std::string> r{key,
+                                   label,
+                                   test,
+                                   number(pressure),
+                                   unit,
+                                   s.count ? number(s.mean) : "",
+                                   s.count ? number(s.sd) : "",
                                    std::to_string(s.count)};
         if (published && s.count) {
             const Comparison c = compare(s, *published);
@@ -243,8 +248,8 @@ std::string headlineCsv(const std::vector<HeadlineRow>& rows, const PooledFitSca
     }
     line("pooled_fit_slope", "slope of Z̄ on N_v/N_vi, every test pooled", "pooled", 0, "-",
          pooled.slope, publishedFitSlope());
-    line("pooled_fit_intercept", "intercept of Z̄ on N_v/N_vi, every test pooled", "pooled", 0,
-         "-", pooled.intercept, publishedFitIntercept());
+    line("pooled_fit_intercept", "intercept of Z̄ on N_v/N_vi, every test pooled", "pooled", 0, "-",
+         pooled.intercept, publishedFitIntercept());
     line("pooled_fit_r2", "R² of that fit", "pooled", 0, "-", pooled.r2, std::nullopt);
     return out;
 }
@@ -266,8 +271,7 @@ int runReportCommand(const ReportCommandOptions& options) {
         }
         writeFileAtomically((out / "headline.csv").string(), headlineCsv(headline, pooled));
         const CriticalStateSummary criticalState = criticalStateOf(loaded.runs);
-        writeFileAtomically((out / "critical_state.csv").string(),
-                            criticalStateCsv(criticalState));
+        writeFileAtomically((out / "critical_state.csv").string(), criticalStateCsv(criticalState));
         if (options.figures) {
             if (const std::string error =
                     options.figures(figureFolder.string(), figures, loaded.sources);
@@ -276,9 +280,8 @@ int runReportCommand(const ReportCommandOptions& options) {
                 return 1;
             }
         }
-        const ReportPage page{figures,        headline,
-                              pooled,         loaded.sources,
-                              figureFolder.string(), &criticalState};
+        const ReportPage page{
+            figures, headline, pooled, loaded.sources, figureFolder.string(), &criticalState};
         writeFileAtomically((out / "report.md").string(), reportMarkdown(page));
         writeFileAtomically((out / "report.html").string(), reportHtml(page));
         if (!options.quiet) {
@@ -299,15 +302,14 @@ int runReproduceCommand(const ReproduceOptions& options) {
     }
     try {
         const fs::path out = fs::absolute(options.out);
-        const nlohmann::json experiment =
-            nlohmann::json::parse(readWholeFile(options.experiment));
-        const int grains = options.grains > 0 ? options.grains
-                                              : experiment.at("grains").at("count").get<int>();
+        const nlohmann::json experiment = nlohmann::json::parse(readWholeFile(options.experiment));
+        const int grains =
+            options.grains > 0 ? options.grains : experiment.at("grains").at("count").get<int>();
         // The reference at K seeds: a study of one setting, run by the study's pool.
         nlohmann::json study{
             {"name", "reproduce"},
-            {"description", fmt::format("the reference experiment at {} grains, {} seed(s)",
-                                        grains, options.seeds)},
+            {"description", fmt::format("the reference experiment at {} grains, {} seed(s)", grains,
+                                        options.seeds)},
             {"base", fs::absolute(options.experiment).string()},
             {"knobs", {{"grain_count", {grains}}}},
             {"reference", {{"grain_count", grains}}},
@@ -316,9 +318,9 @@ int runReproduceCommand(const ReproduceOptions& options) {
         const std::string studyFile = (out / "reproduce.json").string();
         const std::string text = study.dump(2) + "\n";
         if (fs::exists(studyFile) && readWholeFile(studyFile) != text) {
-            throw std::runtime_error(fmt::format(
-                "{} holds a reproduction with other settings ({}); give another --out",
-                out.string(), studyFile));
+            throw std::runtime_error(
+                fmt::format("{} holds a reproduction with other settings ({}); give another --out",
+                            out.string(), studyFile));
         }
         writeFileAtomically(studyFile, text);
         StudyOptions s;

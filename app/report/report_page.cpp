@@ -23,11 +23,20 @@ std::string htmlEscape(const std::string& s) {
     std::string out;
     for (char c : s) {
         switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
+        case '&':
+            out += "&amp;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        default:
+            out += c;
         }
     }
     return out;
@@ -94,7 +103,7 @@ Table headlineRows(const ReportPage& page) {
     for (const HeadlineRow& row : page.headline) {
         const int digits = digitsOf(row.unit, row.key);
         std::vector<std::string> r{row.unit == "-" ? row.label
-                                                  : fmt::format("{} [{}]", row.label, row.unit)};
+                                                   : fmt::format("{} [{}]", row.label, row.unit)};
         std::string comparison;
         for (const HeadlineValue& v : row.values) {
             r.push_back(withScatter(v.value, digits));
@@ -118,17 +127,18 @@ std::string sourcesText(const ReportPage& page) {
         cpu += s.cpuSeconds;
     }
     const ReportSource& first = page.sources.front();
-    return fmt::format("{} run(s) of the experiment `{}` ({} grains), seeds {}; {:.0f} s of run "
-                       "wall time in all ({:.0f} s of processor time).",
-                       page.sources.size(), first.experimentName, first.grains,
-                       [&] {
-                           std::string seeds;
-                           for (const ReportSource& s : page.sources) {
-                               seeds += (seeds.empty() ? "" : ", ") + std::to_string(s.seed);
-                           }
-                           return seeds;
-                       }(),
-                       wall, cpu) +
+    return fmt::format(
+               "{} run(s) of the experiment `{}` ({} grains), seeds {}; {:.0f} s of run "
+               "wall time in all ({:.0f} s of processor time).",
+               page.sources.size(), first.experimentName, first.grains,
+               [&] {
+                   std::string seeds;
+                   for (const ReportSource& s : page.sources) {
+                       seeds += (seeds.empty() ? "" : ", ") + std::to_string(s.seed);
+                   }
+                   return seeds;
+               }(),
+               wall, cpu) +
            [&] {
                int unfinished = 0;
                for (const ReportSource& s : page.sources) {
@@ -145,8 +155,7 @@ std::string sourcesText(const ReportPage& page) {
 std::string pooledText(const PooledFitScatter& p) {
     return fmt::format("Pooled over every shear record of every test, per run: Z̄ = {} N_v/N_vi "
                        "+ {} (R² {}); the published study states Z̄ = 3.45 N_v/N_vi + 2.1.",
-                       withScatter(p.slope, 2), withScatter(p.intercept, 2),
-                       withScatter(p.r2, 3));
+                       withScatter(p.slope, 2), withScatter(p.intercept, 2), withScatter(p.r2, 3));
 }
 
 std::string figureCaption(const ReportFigure& f) {
@@ -194,17 +203,17 @@ std::string criticalStateText(const CriticalStateSummary& cs) {
     if (cs.m.count == 0) {
         return text + " No steady end: no critical state stress ratio or line.";
     }
-    text += fmt::format(" M = q/p at the steady ends: {} ({} ends)", withScatter(cs.m, 3),
-                        cs.m.count);
+    text +=
+        fmt::format(" M = q/p at the steady ends: {} ({} ends)", withScatter(cs.m, 3), cs.m.count);
     if (cs.mDrained.count > 0 && cs.mConstantVolume.count > 0) {
         text += fmt::format("; drained {} ({}), constant volume {} ({})",
                             withScatter(cs.mDrained, 3), cs.mDrained.count,
                             withScatter(cs.mConstantVolume, 3), cs.mConstantVolume.count);
         if (cs.mDrained.count >= 2 && cs.mConstantVolume.count >= 2) {
             // The difference of two means against its standard error.
-            const double se = std::sqrt(cs.mDrained.sd * cs.mDrained.sd / cs.mDrained.count +
-                                        cs.mConstantVolume.sd * cs.mConstantVolume.sd /
-                                            cs.mConstantVolume.count);
+            const double se =
+                std::sqrt(cs.mDrained.sd * cs.mDrained.sd / cs.mDrained.count +
+                          cs.mConstantVolume.sd * cs.mConstantVolume.sd / cs.mConstantVolume.count);
             const double d = cs.mDrained.mean - cs.mConstantVolume.mean;
             text += fmt::format(": they differ by {:.3f}, {} twice the standard error of the "
                                 "difference ({:.3f})",
@@ -235,8 +244,8 @@ std::string criticalStateCsv(const CriticalStateSummary& cs) {
     for (const TestEndState& e : cs.ends) {
         out += fmt::format("{},{},{},{:.9g},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n",
                            quoted(e.run), e.test, e.kind, e.pressure,
-                           e.steady.steady ? "yes" : "no", quoted(e.steady.reason), e.q, e.p,
-                           e.e, e.stressRatio, e.steady.stressSlope, e.steady.volumeSlope);
+                           e.steady.steady ? "yes" : "no", quoted(e.steady.reason), e.q, e.p, e.e,
+                           e.stressRatio, e.steady.stressSlope, e.steady.volumeSlope);
     }
     return out;
 }

@@ -12,9 +12,9 @@
 #include "common/job_list.h"
 #include "common/process_pool.h"
 #include "common/progress_bar.h"
+#include "common/resources.h"
 #include "grainlab/strict_json.h"
 #include "stability/map_point_command.h"
-#include "common/resources.h"
 
 namespace grainlab {
 

@@ -6,9 +6,10 @@
 // (map_point_command.h) run through the common local pool (common/process_pool.h), with one
 // progress bar for the map; each writes DIR/cells/<id>.json atomically, so a killed map resumes
 // with the same command and redoes no finished map point. `--emit slurm|parallel` writes the map
-// points as a Slurm job array or a GNU parallel job list instead (common/job_list.h); `grainlab stability collect DIR` writes the tables
-// (limits.csv and accuracy.csv; servo_limits.csv and servo_runs.csv) and, in GUI builds, the
-// figures. The geometry map is cheap and runs in this process. Main thread.
+// points as a Slurm job array or a GNU parallel job list instead (common/job_list.h); `grainlab
+// stability collect DIR` writes the tables (limits.csv and accuracy.csv; servo_limits.csv and
+// servo_runs.csv) and, in GUI builds, the figures. The geometry map is cheap and runs in this
+// process. Main thread.
 
 #include <functional>
 #include <string>

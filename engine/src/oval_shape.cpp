@@ -67,7 +67,9 @@ std::array<Arc, 4> OvalShape::arcs() const {
              {0.0, sideOffset, sideRadius}}};
 }
 
-double OvalShape::equivalentDiameter() const { return std::sqrt(4.0 * area / kPi); }
+double OvalShape::equivalentDiameter() const {
+    return std::sqrt(4.0 * area / kPi);
+}
 
 std::array<double, 2> OvalShape::boundaryPoint(double normalAngle) const {
     const double dx = std::cos(normalAngle), dy = std::sin(normalAngle);

@@ -48,8 +48,8 @@ herr_t failure(const char* function, hid_t minor, const char* what, int cause) {
 
 H5FD_t* driverOpen(const char* name, unsigned flags, hid_t, haddr_t maxaddr) {
     if (name == nullptr || *name == '\0' || maxaddr == 0 || maxaddr == HADDR_UNDEF) {
-        H5Epush2(H5E_DEFAULT, kThisFile, "driverOpen", __LINE__, H5E_ERR_CLS, H5E_ARGS, H5E_BADVALUE,
-                 "invalid file name or address space");
+        H5Epush2(H5E_DEFAULT, kThisFile, "driverOpen", __LINE__, H5E_ERR_CLS, H5E_ARGS,
+                 H5E_BADVALUE, "invalid file name or address space");
         return nullptr;
     }
     int o = (flags & H5F_ACC_RDWR) ? O_RDWR : O_RDONLY;

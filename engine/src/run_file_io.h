@@ -460,9 +460,8 @@ void writeArray(H5::Group& group, const std::string& name, const T* data, std::s
     // An empty dataset is extendible (a chunk may not exceed fixed dimensions of 0).
     const H5::DataSpace space =
         n > 0 ? H5::DataSpace(1, &dims) : H5::DataSpace(1, &dims, &unlimited);
-    H5::DataSet ds =
-        group.createDataSet(name, H5Types<T>::file(), space, checksummedLayout(n, sizeof(T)),
-                            writeThrough());
+    H5::DataSet ds = group.createDataSet(name, H5Types<T>::file(), space,
+                                         checksummedLayout(n, sizeof(T)), writeThrough());
     if (n > 0) {
         ds.write(data, H5Types<T>::memory());
     }
@@ -532,9 +531,8 @@ std::array<T, N> readFixed(const H5::Group& group, const std::string& name) {
 inline void writeStringDataset(H5::Group& group, const std::string& name, const std::string& text) {
     const H5::StrType t = fixedStringType(text.size());
     const hsize_t one = 1;
-    H5::DataSet ds =
-        group.createDataSet(name, t, H5::DataSpace(1, &one), checksummedLayout(1, t.getSize()),
-                            writeThrough());
+    H5::DataSet ds = group.createDataSet(name, t, H5::DataSpace(1, &one),
+                                         checksummedLayout(1, t.getSize()), writeThrough());
     std::vector<char> buffer(t.getSize(), '\0');
     std::copy(text.begin(), text.end(), buffer.begin());
     ds.write(buffer.data(), t);

@@ -77,7 +77,7 @@ public:
     StageKind kind() const { return planned_.kind; }
     int index() const { return planned_.index; }
     double pressure() const { return planned_.pressure; } ///< [Pa]
-    int testIndex() const { return planned_.test; }      ///< into ExperimentConfig::tests
+    int testIndex() const { return planned_.test; }       ///< into ExperimentConfig::tests
     /// The series its records go to.
     virtual std::string test() const { return planned_.series; }
     /// True for a test (its eps1 is the test's axial strain, reported in RunProgress).

@@ -298,8 +298,8 @@ void JsonSection::refuseUnknown(const std::string& key) const {
     }
     const std::string where = path_.empty() ? "at the top level" : "in " + path_;
     // A key "" has no name to show: name the empty string and where it is.
-    const std::string shown = key.empty() ? fmt::format("\"\" (an empty key name) {}", where)
-                                          : path(key);
+    const std::string shown =
+        key.empty() ? fmt::format("\"\" (an empty key name) {}", where) : path(key);
     fail(key,
          fmt::format("unknown key {}{}; the keys allowed {} are: {}", shown,
                      nearest.empty() ? "" : " (did you mean " + path(nearest) + "?)", where, list));

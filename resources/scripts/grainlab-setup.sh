@@ -32,7 +32,7 @@ packages=(
   xvfb xauth libgl1-mesa-dri
   python3-h5py python3-matplotlib python3-numpy python3-pandas
   python3-dev pybind11-dev python3-pytest jupyter-nbconvert python3-ipykernel python3-vtk9
-  git man-db lintian
+  git man-db lintian clang-format
 )
 
 if ! command -v dpkg-query > /dev/null 2>&1; then

@@ -55,17 +55,27 @@ TEST(GuiBench, RunsOffscreenAndPrintsEveryFigure) {
     const auto [code, out] = runTinyGuiBench("QT_QPA_PLATFORM=offscreen");
 #ifdef GRAINLAB_WITH_GUI
     ASSERT_EQ(code, 0) << out;
-    for (const char* expected :
-         {"platform offscreen", "(a) engine speed, headless and in the live window", "\"tiny\"",
-          "120 grains", "400 steps per run", "round 1: headless", "engine steps/s headless:",
-          "the window with its default display options", "live window: scene drawn with QPainter:",
-          "slowdown", "kept for chart hover", "the scene on the GUI thread:", "picture budget",
-          "a new picture at most every", "measured by the snapshot thread in",
-          "of the engine thread's time", "(b) scene frame time: 150 ovals",
-          "QPainter renderer (raster image): whole cell",
-          "QPainter renderer, the window's default options",
-          "one overlay over the grains, whole cell: void cells",
-          "OpenGL view: skipped: the offscreen platform has no OpenGL"}) {
+    for (const char* expected : {"platform offscreen",
+                                 "(a) engine speed, headless and in the live window",
+                                 "\"tiny\"",
+                                 "120 grains",
+                                 "400 steps per run",
+                                 "round 1: headless",
+                                 "engine steps/s headless:",
+                                 "the window with its default display options",
+                                 "live window: scene drawn with QPainter:",
+                                 "slowdown",
+                                 "kept for chart hover",
+                                 "the scene on the GUI thread:",
+                                 "picture budget",
+                                 "a new picture at most every",
+                                 "measured by the snapshot thread in",
+                                 "of the engine thread's time",
+                                 "(b) scene frame time: 150 ovals",
+                                 "QPainter renderer (raster image): whole cell",
+                                 "QPainter renderer, the window's default options",
+                                 "one overlay over the grains, whole cell: void cells",
+                                 "OpenGL view: skipped: the offscreen platform has no OpenGL"}) {
         EXPECT_NE(out.find(expected), std::string::npos) << expected << " in\n" << out;
     }
 #else

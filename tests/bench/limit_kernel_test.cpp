@@ -75,7 +75,8 @@ TEST(LimitKernel, ComputesTheEngineForcesOnAMovingFrictionalScene) {
             // The same expressions in the same order: bit-identical without fused multiply-adds
             // (checked with -ffp-contract=off over these 300 steps); the native build fuses them
             // differently in the two loops, and a net force is a small difference of contact
-            // forces, so its round-off grows to ~1e-8 of the largest net force and spin in 300 steps.
+            // forces, so its round-off grows to ~1e-8 of the largest net force and spin in 300
+            // steps.
             ASSERT_NEAR(kernel.x1()[i], s.grains.x1[i], 1e-12 * width) << "grain " << i;
             ASSERT_NEAR(kernel.x2()[i], s.grains.x2[i], 1e-12 * width) << "grain " << i;
             ASSERT_NEAR(kernel.v1()[i], s.grains.v1[i], 1e-7 * speedScale) << "grain " << i;

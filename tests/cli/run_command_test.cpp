@@ -18,9 +18,9 @@
 
 #include <H5Cpp.h>
 
-#include "cli_test_files.h"
 #include "cli/run_command.h"
 #include "cli/run_output.h"
+#include "cli_test_files.h"
 #include "grainlab/csv_series.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
@@ -35,7 +35,8 @@ namespace fs = std::filesystem;
 const std::string kSource = GRAINLAB_SOURCE_DIR;
 
 fs::path freshFolder(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / fmt::format("grainlab-test-{}-{}", name, getpid());
+    const fs::path p =
+        fs::temp_directory_path() / fmt::format("grainlab-test-{}-{}", name, getpid());
     fs::remove_all(p);
     return p;
 }
@@ -44,7 +45,8 @@ using test::readText;
 
 /// A tiny experiment: the quick protocol cut to one pressure and a short shear.
 nlohmann::json tinyExperiment() {
-    nlohmann::json j = nlohmann::json::parse(readText(kSource + "/resources/experiments/quick.json"));
+    nlohmann::json j =
+        nlohmann::json::parse(readText(kSource + "/resources/experiments/quick.json"));
     j["name"] = "tiny";
     j["grains"]["count"] = 120;
     j["compaction"]["pressures"] = {50e3};
@@ -63,7 +65,8 @@ fs::path writeExperiment(const fs::path& folder, const nlohmann::json& j) {
 }
 
 int runGrainlab(const std::string& arguments) {
-    const int status = std::system(fmt::format("{} {} > /dev/null 2>&1", GRAINLAB_EXE, arguments).c_str());
+    const int status =
+        std::system(fmt::format("{} {} > /dev/null 2>&1", GRAINLAB_EXE, arguments).c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -149,7 +152,8 @@ TEST(RunCommand, ResumeEqualsUninterruptedRun) {
     {
         RunOutputFolder output((base / "parts").string(), config.sourceText, false);
         ExperimentRunner runner(config, &output);
-        while (runner.progress().stage.rfind("shear", 0) != 0 || runner.progress().axialStrain < 0.0017) {
+        while (runner.progress().stage.rfind("shear", 0) != 0 ||
+               runner.progress().axialStrain < 0.0017) {
             ASSERT_TRUE(runner.advance(100));
         }
         runner.advance(37); // not at a record boundary
@@ -180,8 +184,8 @@ TEST(RunCommand, ResumeEqualsUninterruptedRun) {
         // Every checkpoint carries its void cells; their areas tile the cell.
         const std::string f = (base / "whole" / "run.h5").string();
         H5::H5File file(f, H5F_ACC_RDONLY);
-        H5::DataSet ds = file.openDataSet(checkpointGroup(listCheckpoints(f).back()) +
-                                          "/void_cells/area");
+        H5::DataSet ds =
+            file.openDataSet(checkpointGroup(listCheckpoints(f).back()) + "/void_cells/area");
         hsize_t n = 0;
         ds.getSpace().getSimpleExtentDims(&n);
         std::vector<double> area(n);

@@ -20,7 +20,9 @@ namespace fs = std::filesystem;
 
 using test::readText;
 
-fs::path freshFolder(const std::string& name) { return test::freshFolder("cost", name); }
+fs::path freshFolder(const std::string& name) {
+    return test::freshFolder("cost", name);
+}
 
 /// 120 grains, one pressure, a short shear.
 fs::path tinyExperiment(const fs::path& folder) {

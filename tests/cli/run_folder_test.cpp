@@ -6,17 +6,17 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
-#include <vector>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -341,14 +341,13 @@ std::string otherReadersRefuse(const fs::path& file, const std::string& python) 
     if (shell(fmt::format("h5dump {}", file.string())) != 0) {
         out += " h5dump fails;";
     }
-    const std::string script =
-        "import h5py, sys\n"
-        "f = h5py.File(sys.argv[1], 'r')\n"
-        "def read(name, o):\n"
-        "    list(o.attrs.items())\n"
-        "    if isinstance(o, h5py.Dataset): o[()]\n"
-        "read('/', f)\n"
-        "f.visititems(read)\n";
+    const std::string script = "import h5py, sys\n"
+                               "f = h5py.File(sys.argv[1], 'r')\n"
+                               "def read(name, o):\n"
+                               "    list(o.attrs.items())\n"
+                               "    if isinstance(o, h5py.Dataset): o[()]\n"
+                               "read('/', f)\n"
+                               "f.visititems(read)\n";
     const fs::path scriptFile = file.parent_path() / "read_all.py";
     std::ofstream(scriptFile) << script;
     if (shell(fmt::format("{} {} {}", python, scriptFile.string(), file.string())) != 0) {

@@ -114,8 +114,7 @@ TEST(WriteFailure, AFailedWriteInsideHdf5KeepsTheLastCheckpointAndResumesExactly
         EXPECT_EQ(WEXITSTATUS(r.status), 1) << r.output;
         EXPECT_NE(r.output.find("error: " + file + ": "), std::string::npos) << r.output;
         EXPECT_NE(r.output.find("the file size limit is reached"), std::string::npos) << r.output;
-        EXPECT_NE(r.output.find("keeps its last good checkpoint 0"), std::string::npos)
-            << r.output;
+        EXPECT_NE(r.output.find("keeps its last good checkpoint 0"), std::string::npos) << r.output;
         EXPECT_NE(r.output.find("grainlab run --resume " + out.string()), std::string::npos)
             << r.output;
         EXPECT_EQ(r.output.find("failed\n"), std::string::npos) << r.output; // no "H5Dclose failed"

@@ -239,8 +239,8 @@ TEST(AxisPaths, PathControlsGiveTheSameBitsOnOneAndTwoThreads) {
             lateral.pathSlope = -1.0;
             lateral.pathOrigin = sim.stress().s11;
             sim.setAxisControl(1, lateral);
-            sim.setAxisControl(0, axialStrainControl(5e-7, sim.state().parameters.timeStep,
-                                                     sim.state().cell[0]));
+            sim.setAxisControl(
+                0, axialStrainControl(5e-7, sim.state().parameters.timeStep, sim.state().cell[0]));
             sim.advance(3000);
             ends.push_back(sim.state());
         }

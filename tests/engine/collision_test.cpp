@@ -72,11 +72,10 @@ TEST(Collision, ObliqueFrictionalImpactDissipatesBySliding) {
     p.timeStep = 1e-7;
     const double angle = 40.0 * kPi / 180.0;
     const double offset = 0.5 * d + 1e-7;
-    Simulation sim(makeScene(
-        {{0.01, 0.01, 0, 0, 0, 0, d, 1.0},
-         {0.01 - 2 * offset * std::cos(angle), 0.01 - 2 * offset * std::sin(angle),
-          0, v, 0, 0, d, 1.0}},
-        0.03, 0.03, p));
+    Simulation sim(makeScene({{0.01, 0.01, 0, 0, 0, 0, d, 1.0},
+                              {0.01 - 2 * offset * std::cos(angle),
+                               0.01 - 2 * offset * std::sin(angle), 0, v, 0, 0, d, 1.0}},
+                             0.03, 0.03, p));
     const Energies before = sim.energies();
     bool slid = false;
     for (int k = 0; k < 6000; ++k) {

@@ -64,7 +64,8 @@ BruteContact bruteForce(const OvalShape& A, double thetaA, const OvalShape& B, d
     // Refine the three smallest local minima with the fine polygons (golden section).
     std::vector<int> minima;
     for (int k = 0; k < samples; ++k) {
-        if (value[k] <= value[(k + 1) % samples] && value[k] <= value[(k + samples - 1) % samples]) {
+        if (value[k] <= value[(k + 1) % samples] &&
+            value[k] <= value[(k + samples - 1) % samples]) {
             minima.push_back(k);
         }
     }
@@ -116,8 +117,8 @@ RandomPair randomPair(Random& random, double aspect) {
                  0};
     const double direction = random.uniform(0, 2 * kPi);
     const double reach = p.A.halfHeight + p.B.halfHeight +
-                         random.uniform(-0.15, 1.0) * (p.A.halfWidth + p.B.halfWidth -
-                                                       p.A.halfHeight - p.B.halfHeight);
+                         random.uniform(-0.15, 1.0) *
+                             (p.A.halfWidth + p.B.halfWidth - p.A.halfHeight - p.B.halfHeight);
     p.dx = reach * std::cos(direction);
     p.dy = reach * std::sin(direction);
     return p;
@@ -129,8 +130,7 @@ TEST(ContactGeometry, ArcRuleMatchesSeparatingAxisBruteForce) {
     for (int trial = 0; trial < 1500; ++trial) {
         const double aspect = trial % 3 == 0 ? 0.35 : 0.6;
         const RandomPair p = randomPair(random, aspect);
-        const ContactGeometry g =
-            ovalContactAllPairs(p.A, p.thetaA, p.B, p.thetaB, p.dx, p.dy);
+        const ContactGeometry g = ovalContactAllPairs(p.A, p.thetaA, p.B, p.thetaB, p.dx, p.dy);
         const BruteContact b = bruteForce(p.A, p.thetaA, p.B, p.thetaB, p.dx, p.dy);
         const double scale = std::min(p.A.width, p.B.width);
         // The inscribed polygons under-estimate each support by < 2e-8 W.
@@ -141,16 +141,14 @@ TEST(ContactGeometry, ArcRuleMatchesSeparatingAxisBruteForce) {
             const double diff = std::remainder(angle - b.angle, 2 * kPi);
             ASSERT_LT(std::fabs(diff), 2e-3) << "trial " << trial;
             // Contact point: mid-way between the support points of A along n and B along -n.
-            const auto pa = p.A.boundaryPoint(std::atan2(-std::sin(p.thetaA) * g.normalX +
-                                                             std::cos(p.thetaA) * g.normalY,
-                                                         std::cos(p.thetaA) * g.normalX +
-                                                             std::sin(p.thetaA) * g.normalY));
+            const auto pa = p.A.boundaryPoint(
+                std::atan2(-std::sin(p.thetaA) * g.normalX + std::cos(p.thetaA) * g.normalY,
+                           std::cos(p.thetaA) * g.normalX + std::sin(p.thetaA) * g.normalY));
             const double ax = std::cos(p.thetaA) * pa[0] - std::sin(p.thetaA) * pa[1];
             const double ay = std::sin(p.thetaA) * pa[0] + std::cos(p.thetaA) * pa[1];
-            const auto pb = p.B.boundaryPoint(std::atan2(std::sin(p.thetaB) * g.normalX -
-                                                             std::cos(p.thetaB) * g.normalY,
-                                                         -std::cos(p.thetaB) * g.normalX -
-                                                             std::sin(p.thetaB) * g.normalY));
+            const auto pb = p.B.boundaryPoint(
+                std::atan2(std::sin(p.thetaB) * g.normalX - std::cos(p.thetaB) * g.normalY,
+                           -std::cos(p.thetaB) * g.normalX - std::sin(p.thetaB) * g.normalY));
             const double bx = p.dx + std::cos(p.thetaB) * pb[0] - std::sin(p.thetaB) * pb[1];
             const double by = p.dy + std::sin(p.thetaB) * pb[0] + std::cos(p.thetaB) * pb[1];
             ASSERT_NEAR(g.pointX, 0.5 * (ax + bx), 1e-9 * 1e3 * scale) << "trial " << trial;
@@ -165,8 +163,7 @@ TEST(ContactGeometry, FourPairFormEqualsSixteenPairReference) {
     int touching = 0;
     for (int trial = 0; trial < 200000; ++trial) {
         const RandomPair p = randomPair(random, trial % 2 ? 0.6 : 0.4);
-        const ContactGeometry ref =
-            ovalContactAllPairs(p.A, p.thetaA, p.B, p.thetaB, p.dx, p.dy);
+        const ContactGeometry ref = ovalContactAllPairs(p.A, p.thetaA, p.B, p.thetaB, p.dx, p.dy);
         const ContactGeometry fast =
             ovalContact(p.A, std::cos(p.thetaA), std::sin(p.thetaA), p.B, std::cos(p.thetaB),
                         std::sin(p.thetaB), p.dx, p.dy);
@@ -310,9 +307,8 @@ TEST(ContactGeometry, OneFormArcsScaleToEachShapesArcs) {
     EXPECT_FALSE(oneFormArcs({}, unit));
     EXPECT_FALSE(oneFormArcs({makeOval(1e-3, 0.6), makeOval(2e-3, 0.6 + 1e-9)}, unit));
     EXPECT_FALSE(oneFormArcs({makeOval(1e-3, 0.6), makeOval(2e-3, 1.0)}, unit));
-    EXPECT_FALSE(oneFormArcs({makeOval(1e-3, 0.6),
-                              makeOval(2e-3, 0.6, OvalClosure::EndRadiusRatio, 0.2)},
-                             unit));
+    EXPECT_FALSE(oneFormArcs(
+        {makeOval(1e-3, 0.6), makeOval(2e-3, 0.6, OvalClosure::EndRadiusRatio, 0.2)}, unit));
 }
 
 // The engine's one-form kernel (the quadrant kernel on a * unit arcs) against the 16-pair
@@ -325,10 +321,9 @@ TEST(ContactGeometry, OneFormKernelEqualsSixteenPairReference) {
     const int trials = 30000;
     for (int trial = 0; trial < trials; ++trial) {
         const double aspect = aspects[trial % 3];
-        const double fraction = trial % 4 == 0
-                                    ? (random.uniform() < 0.5 ? -1.0 : 1.0) *
-                                          std::pow(10.0, random.uniform(-12.0, -6.0))
-                                    : random.uniform(-0.05, 0.08);
+        const double fraction = trial % 4 == 0 ? (random.uniform() < 0.5 ? -1.0 : 1.0) *
+                                                     std::pow(10.0, random.uniform(-12.0, -6.0))
+                                               : random.uniform(-0.05, 0.08);
         const RandomPair p = pairAtOverlap(random, aspect, aspect, fraction);
         OvalArcs u;
         ASSERT_TRUE(oneFormArcs({p.A, p.B}, u));

@@ -144,8 +144,8 @@ TEST(HostileExperiment, BytesAfterANulAreRefusedWithItsPosition) {
 
 TEST(HostileExperiment, AnEmptyKeyOrANonObjectFileIsNamedInWords) {
     // "bad.json:  = [1,2]: must be an object" and "unknown key ;" named nothing.
-    expectRefusedText("[1, 2]", "", {"bad.json: the file must hold one object", "top level",
-                                     "got an array"});
+    expectRefusedText("[1, 2]", "",
+                      {"bad.json: the file must hold one object", "top level", "got an array"});
     Json j = minimalExperiment();
     j[""] = 1;
     expectRefused(j, "", {"unknown key \"\" (an empty key name) at the top level"});

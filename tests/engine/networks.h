@@ -47,8 +47,8 @@ inline void addBranchContact(ContactNetwork& net, int a, int b, int k1 = 0, int 
 /// contacts by adjacency (3 per grain), unit normal forces.
 inline ContactNetwork hexagonalNetwork(int nx, int ny, double d) {
     const double rowHeight = d * std::sqrt(3.0) / 2.0;
-    ContactNetwork net = emptyNetwork(nx * ny, {nx * d, 0.0, 0.0, ny * rowHeight},
-                                      std::numbers::pi * d * d / 4);
+    ContactNetwork net =
+        emptyNetwork(nx * ny, {nx * d, 0.0, 0.0, ny * rowHeight}, std::numbers::pi * d * d / 4);
     auto id = [&](int i, int j) { return ((j + ny) % ny) * nx + (i + nx) % nx; };
     for (int j = 0; j < ny; ++j) {
         for (int i = 0; i < nx; ++i) {

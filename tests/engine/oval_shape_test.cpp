@@ -23,8 +23,10 @@ void polygonMoments(const OvalShape& s, int vertices, double& area, double& pola
         const auto& b = p[(k + 1) % vertices];
         const double cross = a[0] * b[1] - b[0] * a[1];
         area += 0.5 * cross;
-        polar += cross * (a[0] * a[0] + a[0] * b[0] + b[0] * b[0] + a[1] * a[1] + a[1] * b[1] +
-                          b[1] * b[1]) / 12.0;
+        polar +=
+            cross *
+            (a[0] * a[0] + a[0] * b[0] + b[0] * b[0] + a[1] * a[1] + a[1] * b[1] + b[1] * b[1]) /
+            12.0;
     }
 }
 

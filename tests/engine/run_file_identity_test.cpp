@@ -13,10 +13,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "experiment_fixtures.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/run_file.h"
-#include "experiment_fixtures.h"
 
 namespace grainlab {
 namespace {

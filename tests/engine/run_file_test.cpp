@@ -190,9 +190,9 @@ TEST(RunFile, LargeDatasetsAreCompressedAndReadBackBitExact) {
         }
         return ids;
     };
-    EXPECT_EQ(filters("grains/omega"),
-              (std::vector<H5Z_filter_t>{H5Z_FILTER_SHUFFLE, H5Z_FILTER_DEFLATE,
-                                         H5Z_FILTER_FLETCHER32}));
+    EXPECT_EQ(
+        filters("grains/omega"),
+        (std::vector<H5Z_filter_t>{H5Z_FILTER_SHUFFLE, H5Z_FILTER_DEFLATE, H5Z_FILTER_FLETCHER32}));
     EXPECT_EQ(filters("cell"), std::vector<H5Z_filter_t>{H5Z_FILTER_FLETCHER32});
 }
 

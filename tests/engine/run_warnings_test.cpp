@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "experiment_fixtures.h"
 #include "grainlab/assembly.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
@@ -22,7 +23,6 @@
 #include "grainlab/run_file.h"
 #include "grainlab/study_plan.h"
 #include "grainlab/time_step.h"
-#include "experiment_fixtures.h"
 
 namespace grainlab {
 namespace {

@@ -398,9 +398,9 @@ TEST(FastPaths, OneFormKernelEqualsPerGrainTables) {
 TEST(FastPaths, OvalsOfTwoFormsUseThePerGrainTables) {
     // Two grains, 1 and 1.5 mm wide, of aspect ratios `first` and `second` (1: a disk).
     const auto pairOf = [](double first, double second) {
-        return Simulation(makeScene({{1e-3, 1e-3, 0, 0, 0, 0, 1e-3, first},
-                                     {3e-3, 3e-3, 0, 0, 0, 0, 1.5e-3, second}},
-                                    5e-3, 5e-3, bareParameters()));
+        return Simulation(makeScene(
+            {{1e-3, 1e-3, 0, 0, 0, 0, 1e-3, first}, {3e-3, 3e-3, 0, 0, 0, 0, 1.5e-3, second}}, 5e-3,
+            5e-3, bareParameters()));
     };
     EXPECT_TRUE(pairOf(0.6, 0.6).oneFormKernel());
     EXPECT_FALSE(pairOf(0.6, 0.5).oneFormKernel());

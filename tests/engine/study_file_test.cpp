@@ -18,12 +18,11 @@ std::string study(const std::string& body) {
 }
 
 TEST(StudyFile, ReadsKnobsReferenceSeedsAndDefaults) {
-    const StudySpec s = parseStudyText(
-        study(R"("name": "t", "knobs": {"damping": [{"kind": "none"},
+    const StudySpec s = parseStudyText(study(R"("name": "t", "knobs": {"damping": [{"kind": "none"},
                  {"kind": "cundall_local", "coefficient": 0.7}], "time_step_fraction": [0.5, 0.25]},
                  "reference": {"time_step_fraction": 0.1}, "seeds": 3,
                  "metrics": {"peak_q_over_p": {"tolerance": 0.01}})"),
-        "t.json", kFolder);
+                                       "t.json", kFolder);
     EXPECT_EQ(s.name, "t");
     ASSERT_EQ(s.knobs.size(), 2u);
     EXPECT_EQ(s.knobs[0].kind, KnobKind::TimeStepFraction); // the knob table's order
@@ -45,8 +44,8 @@ TEST(StudyFile, ReadsKnobsReferenceSeedsAndDefaults) {
 }
 
 struct BadStudy {
-    const char* body;  ///< the study file's keys after "base"
-    const char* key;   ///< the key path the refusal must name
+    const char* body; ///< the study file's keys after "base"
+    const char* key;  ///< the key path the refusal must name
 };
 
 class StudyFileRefuses : public ::testing::TestWithParam<BadStudy> {};
@@ -107,8 +106,7 @@ TEST(StudyFile, RefusesAMissingOrBadBase) {
     EXPECT_THROW(parseStudyText(R"({"knobs": {"threads": [1]}})", "b.json", kFolder),
                  JsonFileError);
     try {
-        parseStudyText(R"({"base": "nowhere.json", "knobs": {"threads": [1]}})", "b.json",
-                       kFolder);
+        parseStudyText(R"({"base": "nowhere.json", "knobs": {"threads": [1]}})", "b.json", kFolder);
         FAIL();
     } catch (const JsonFileError& e) {
         EXPECT_NE(std::string(e.what()).find("nowhere.json"), std::string::npos) << e.what();

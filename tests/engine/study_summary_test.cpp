@@ -126,7 +126,7 @@ TEST(StudySummary, ASettingThatWidensTheSeedScatterBeyondTheToleranceIsNotValid)
     EXPECT_FALSE(*a.withinTolerance);
     EXPECT_FALSE(s.settings[1].valid);
     const MetricSummary& b = metric(s.settings[2], "peak_q_over_p");
-    EXPECT_TRUE(*b.withinTolerance); // 0.02 + 0 <= 0.0255
+    EXPECT_TRUE(*b.withinTolerance);  // 0.02 + 0 <= 0.0255
     EXPECT_TRUE(s.settings[0].valid); // the reference never widens its own scatter
     EXPECT_EQ(*s.recommended, 2);
 }

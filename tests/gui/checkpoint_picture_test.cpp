@@ -46,18 +46,18 @@ TEST(CheckpointPicture, DrawsTheCheckpointAsTheWindowsRendererDoes) {
                   .status,
               0);
     const QString picture = work.filePath(QStringLiteral("p015.png"));
-    const Result drawn = grainlab({QStringLiteral("export"), QStringLiteral("picture"), run,
-                                   QStringLiteral("--test"), QStringLiteral("p015kPa"),
-                                   QStringLiteral("--strain"), QStringLiteral("0.01"),
-                                   QStringLiteral("--out"), picture, QStringLiteral("--size"),
-                                   QStringLiteral("400"), QStringLiteral("--void-cells"),
-                                   QStringLiteral("valence")});
+    const Result drawn = grainlab(
+        {QStringLiteral("export"), QStringLiteral("picture"), run, QStringLiteral("--test"),
+         QStringLiteral("p015kPa"), QStringLiteral("--strain"), QStringLiteral("0.01"),
+         QStringLiteral("--out"), picture, QStringLiteral("--size"), QStringLiteral("400"),
+         QStringLiteral("--void-cells"), QStringLiteral("valence")});
     ASSERT_EQ(drawn.status, 0) << drawn.output.toStdString();
     const QImage fromCommand(picture);
     ASSERT_EQ(fromCommand.size(), QSize(400, 400));
 
     // The same checkpoint drawn here, with the same options.
-    const RunFileView file = openRunFile(QDir(run).filePath(QStringLiteral("run.h5")).toStdString());
+    const RunFileView file =
+        openRunFile(QDir(run).filePath(QStringLiteral("run.h5")).toStdString());
     const int index = nearestCheckpoint(file, "run.h5: p015kPa", 0.01);
     ASSERT_GE(index, 0);
     EXPECT_TRUE(drawn.output.contains(QString::fromStdString(file.checkpoints[std::size_t(index)])))
@@ -71,8 +71,8 @@ TEST(CheckpointPicture, DrawsTheCheckpointAsTheWindowsRendererDoes) {
     renderer.fitToCell(QSize(400, 400));
     const QString here = work.filePath(QStringLiteral("here.png"));
     QString error;
-    ASSERT_TRUE(exportFigure(here, QSize(400, 400),
-                             [&](QPainter& p, QSize s) { renderer.render(p, s); }, &error))
+    ASSERT_TRUE(exportFigure(
+        here, QSize(400, 400), [&](QPainter& p, QSize s) { renderer.render(p, s); }, &error))
         << error.toStdString();
     const QImage drawnHere(here);
     ASSERT_EQ(drawnHere.size(), fromCommand.size());

@@ -53,8 +53,8 @@ TEST(ReportAction, WritesTheRunsReportAndOpensIt) {
     EXPECT_TRUE(w.reportAction()->isEnabled());
 
     click(w, w.startAction());
-    ASSERT_TRUE(waitFor([&] { return w.controller().status().state == RunState::Finished; },
-                        180000))
+    ASSERT_TRUE(
+        waitFor([&] { return w.controller().status().state == RunState::Finished; }, 180000))
         << w.controller().status().error;
     w.reportAction()->trigger();
     ASSERT_TRUE(waitFor([&] { return written.count() == 1; }, 120000));

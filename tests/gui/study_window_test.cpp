@@ -137,8 +137,8 @@ TEST(StudyWindow, RunsTheTinyStudyAndChartsOnePointPerSetting) {
     // Start again: the study continues to its end.
     ASSERT_TRUE(s->start(&error)) << error.toStdString();
     ASSERT_TRUE(waitFor([&] { return !s->running(); }, 600000));
-    ASSERT_EQ(s->lastExitStatus().value_or(-99), 0) << s->statusLabel()->text().toStdString()
-                                                    << runLogs(folder);
+    ASSERT_EQ(s->lastExitStatus().value_or(-99), 0)
+        << s->statusLabel()->text().toStdString() << runLogs(folder);
     ASSERT_TRUE(waitFor([&] { return finished(*s) == total; }, 20000));
     EXPECT_EQ(s->progressBar()->value(), total);
     EXPECT_GE(counts.size(), 3u) << "the runs' results came in all at once";

@@ -171,8 +171,7 @@ TEST(WindowPictures, ABindingBudgetSpacesRunningPicturesButZoomAndPauseShowAtOnc
     // missed only makes a gap longer.
     ASSERT_GE(shown.size(), 2u);
     for (std::size_t k = 1; k < shown.size(); ++k) {
-        EXPECT_GE(shown[k].atMs - shown[k - 1].atMs, shown[k].intervalMs - 3.0)
-            << "picture " << k;
+        EXPECT_GE(shown[k].atMs - shown[k - 1].atMs, shown[k].intervalMs - 3.0) << "picture " << k;
         EXPECT_GE(shown[k].intervalMs, 33.0);
     }
     // The controller publishes at the pictures' pace, not every 33 ms (about 90 in 3 s).

@@ -6,20 +6,20 @@
 #include <cstdio>
 #include <filesystem>
 
-#include <QDir>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
-#include <QImage>
 #include <QFile>
+#include <QImage>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSpinBox>
 
 #include <gtest/gtest.h>
 
-#include "common/atomic_file.h"
 #include "cli/run_output.h"
+#include "common/atomic_file.h"
 #include "grainlab/csv_series.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
@@ -251,8 +251,7 @@ TEST(WindowRun, AConstantVolumeTestChosenInTheParametersRunsAndDrawsItsStressPat
     ParametersPanel* p = w.parametersPanel();
     // The slope is for a stress path only.
     EXPECT_FALSE(p->pathSlopeEdit()->isEnabled());
-    p->testKindEdit()->setCurrentIndex(
-        p->testKindEdit()->findData(QStringLiteral("stress_path")));
+    p->testKindEdit()->setCurrentIndex(p->testKindEdit()->findData(QStringLiteral("stress_path")));
     EXPECT_TRUE(p->pathSlopeEdit()->isEnabled());
     p->pathSlopeEdit()->setValue(-0.5);
     EXPECT_NE(w.editedExperimentText().toStdString().find("\"slope\": -0.5"), std::string::npos)
@@ -286,7 +285,8 @@ TEST(WindowRun, AConstantVolumeTestChosenInTheParametersRunsAndDrawsItsStressPat
     ASSERT_FALSE(w.sceneView()->snapshot()->series.empty());
     EXPECT_EQ(w.sceneView()->snapshot()->series.back().test, test);
     // The run file records the test's rows under its kind, at constant volume.
-    const std::string runFile = QDir(w.runFolder()).filePath(QStringLiteral("run.h5")).toStdString();
+    const std::string runFile =
+        QDir(w.runFolder()).filePath(QStringLiteral("run.h5")).toStdString();
     const SeriesTable t = readSeries(runFile, test);
     int rows = 0;
     for (std::size_t k = 0; k < t.rows.size(); ++k) {
@@ -316,10 +316,9 @@ TEST(WindowRun, ACyclicTestRunsAndDrawsItsLoopsLiveCycleAndPressurePerCycle) {
     const QString runs = freshFolder(QStringLiteral("cyclic"));
     MainWindow w;
     w.setRunsFolder(runs);
-    w.setExperiment(smallExperiment(0.005, {{"kind", "cyclic"},
-                                            {"drainage", "constant_volume"},
-                                            {"amplitude", 1e-3},
-                                            {"cycles", 3}}));
+    w.setExperiment(smallExperiment(
+        0.005,
+        {{"kind", "cyclic"}, {"drainage", "constant_volume"}, {"amplitude", 1e-3}, {"cycles", 3}}));
     w.resize(1400, 900);
     w.show();
     click(w, w.startAction());
@@ -336,7 +335,8 @@ TEST(WindowRun, ACyclicTestRunsAndDrawsItsLoopsLiveCycleAndPressurePerCycle) {
     ASSERT_GT(points.size(), 20);
     int turns = 0;
     for (int k = 1; k + 1 < points.size(); ++k) {
-        const double in = points[k].x() - points[k - 1].x(), out = points[k + 1].x() - points[k].x();
+        const double in = points[k].x() - points[k - 1].x(),
+                     out = points[k + 1].x() - points[k].x();
         turns += in * out < 0;
     }
     EXPECT_GE(turns, 5) << "3 cycles reverse eps1 at least 5 times between their ends";
@@ -348,8 +348,7 @@ TEST(WindowRun, ACyclicTestRunsAndDrawsItsLoopsLiveCycleAndPressurePerCycle) {
 
     charts->showPage(QStringLiteral("Stress paths"));
     QTest::qWait(100);
-    const int boldPixels =
-        plotPixelsOf(*charts, loops, charts->testColour(test).darker(130), 20);
+    const int boldPixels = plotPixelsOf(*charts, loops, charts->testColour(test).darker(130), 20);
     EXPECT_GT(boldPixels, 50) << "the live cycle is not drawn";
 }
 

@@ -25,12 +25,11 @@ namespace {
 namespace fs = std::filesystem;
 using test::childrenOf;
 using test::freshFolder;
-using test::run;
 using test::processRuns;
+using test::run;
 using test::text;
 
 const std::string kTinyExperiment = GRAINLAB_SOURCE_DIR "/resources/experiments/tiny.json";
-
 
 /// A study of the tiny experiment sheared to 60 % instead of 2 %: each run takes far longer
 /// than the test waits for it to end (minutes on two cores), so only the end of its pool ends it.

@@ -33,7 +33,6 @@ using test::freshFolder;
 using test::run;
 using test::text;
 
-
 std::vector<std::vector<std::string>> readCsv(const fs::path& p) {
     std::vector<std::vector<std::string>> t;
     std::istringstream in(text(p));
@@ -70,7 +69,8 @@ class Reproduce : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
         folder_ = new fs::path(freshFolder("reproduce"));
-        status_ = run(std::string(GRAINLAB_EXE) + " reproduce --experiment " GRAINLAB_SOURCE_DIR
+        status_ = run(std::string(GRAINLAB_EXE) +
+                      " reproduce --experiment " GRAINLAB_SOURCE_DIR
                       "/resources/experiments/tiny.json --seeds 2 --quiet --out " +
                       folder_->string() + " > " + folder_->string() + ".log 2>&1");
     }
@@ -80,10 +80,9 @@ protected:
         delete folder_;
     }
     static SeriesTable series(int seed, const std::string& test) {
-        return readSeries((*folder_ / "study" / "runs" / ("ref-seed" + std::to_string(seed)) /
-                           "run.h5")
-                              .string(),
-                          test);
+        return readSeries(
+            (*folder_ / "study" / "runs" / ("ref-seed" + std::to_string(seed)) / "run.h5").string(),
+            test);
     }
     static fs::path* folder_;
     static int status_;
@@ -140,8 +139,7 @@ TEST_F(Reproduce, CurvesAreTheMeanOfTheTwoSeedsWithTheirStandardDeviation) {
         const auto ya = valueAt(a, at), yb = valueAt(b, at);
         ASSERT_TRUE(ya && yb) << at;
         EXPECT_NEAR(std::stod(csv[r][std::size_t(mean)]), (*ya + *yb) / 2, 1e-7);
-        EXPECT_NEAR(std::stod(csv[r][std::size_t(sd)]), std::abs(*ya - *yb) / std::sqrt(2.0),
-                    1e-7);
+        EXPECT_NEAR(std::stod(csv[r][std::size_t(sd)]), std::abs(*ya - *yb) / std::sqrt(2.0), 1e-7);
         ++checked;
     }
     EXPECT_GT(checked, 50);
@@ -228,8 +226,7 @@ TEST_F(Reproduce, OneRunsHeadlineTableJudgesNoScatterAsItsPageDoes) {
     ASSERT_EQ(status_, 0);
     const fs::path out = *folder_ / "one";
     ASSERT_EQ(run(fmt::format("{} report {} --out {} > /dev/null 2>&1", GRAINLAB_EXE,
-                              (*folder_ / "study" / "runs" / "ref-seed1").string(),
-                              out.string())),
+                              (*folder_ / "study" / "runs" / "ref-seed1").string(), out.string())),
               0);
     const auto table = readCsv(out / "headline.csv");
     ASSERT_GT(table.size(), 1u);

@@ -26,8 +26,8 @@ std::string pageWith(const std::vector<HeadlineValue>& values) {
 
 TEST(ReportPage, ABoundIsJudgedAgainstTheSeedScatterOnlyWhenThereIsOne) {
     // One run above the bound of 0.4 %: nothing to judge its distance by.
-    std::string md = pageWith({{"p015kPa", 15e3, Scatter{0.412, 0, 1}},
-                               {"p025kPa", 25e3, Scatter{0.299, 0, 1}}});
+    std::string md = pageWith(
+        {{"p015kPa", 15e3, Scatter{0.412, 0, 1}}, {"p025kPa", 25e3, Scatter{0.299, 0, 1}}});
     EXPECT_NE(md.find("15 kPa: above the bound (one run: no scatter to judge by)"),
               std::string::npos)
         << md;

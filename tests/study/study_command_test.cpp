@@ -36,7 +36,6 @@ using test::text;
 
 const std::string kStudy = GRAINLAB_SOURCE_DIR "/resources/studies/tiny.json";
 
-
 /// A CSV file as rows of cells (no quoted cells in the study's files).
 using Table = std::vector<std::vector<std::string>>;
 Table readCsv(const fs::path& p) {

@@ -323,8 +323,7 @@ TEST(ChartsPanel, ChartsACyclicTestsPressurePerCycleAndItsLiveCycle) {
     std::vector<int> upper; // indices of the upper peaks
     for (int k = 0; k < records; ++k) {
         const int phase = (k + quarter) % (4 * quarter); // starts at eps1 = 0 going up
-        const double eps1 =
-            0.001 * (phase <= 2 * quarter ? phase - quarter : 3 * quarter - phase);
+        const double eps1 = 0.001 * (phase <= 2 * quarter ? phase - quarter : 3 * quarter - phase);
         if (phase == 2 * quarter) {
             upper.push_back(k);
         }

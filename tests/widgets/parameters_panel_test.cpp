@@ -48,7 +48,8 @@ TEST(ParametersPanel, TheTestIsChosenAndAListOrACyclicTestIsKeptAsTheFileHasIt) 
         const ExperimentConfig c =
             readExperimentFile(std::string(GRAINLAB_SOURCE_DIR "/resources/experiments/") + preset);
         panel.setExperiment(c);
-        EXPECT_TRUE(panel.testKindEdit()->currentText().startsWith(QStringLiteral("as in the file")))
+        EXPECT_TRUE(
+            panel.testKindEdit()->currentText().startsWith(QStringLiteral("as in the file")))
             << preset << ": " << panel.testKindEdit()->currentText().toStdString();
         const ExperimentConfig kept = panel.applied();
         ASSERT_EQ(kept.tests.size(), c.tests.size()) << preset;

@@ -84,8 +84,8 @@ TEST(PixelCanvas, FillCoversExactlyThePixelsWhoseCentresAreInside) {
     std::uniform_real_distribution<double> where(-10.0, 70.0), size(1.0, 30.0);
     int covered = 0;
     for (int trial = 0; trial < 300; ++trial) {
-        const auto polygon = randomPolygon(rng, QPointF(where(rng), where(rng)), size(rng),
-                                           3 + trial % 12);
+        const auto polygon =
+            randomPolygon(rng, QPointF(where(rng), where(rng)), size(rng), 3 + trial % 12);
         QImage image = blank(64, 48);
         PixelCanvas canvas(image);
         canvas.fillPolygon(polygon.data(), int(polygon.size()), qRgb(200, 10, 10));
@@ -105,8 +105,8 @@ TEST(PixelCanvas, ConvexWalkEqualsTheGeneralFill) {
     std::mt19937 rng(12);
     std::uniform_real_distribution<double> where(-5.0, 45.0), size(0.5, 25.0);
     for (int trial = 0; trial < 500; ++trial) {
-        const auto polygon = randomConvexPolygon(rng, QPointF(where(rng), where(rng)), size(rng),
-                                                 3 + trial % 30);
+        const auto polygon =
+            randomConvexPolygon(rng, QPointF(where(rng), where(rng)), size(rng), 3 + trial % 30);
         QImage general = blank(40, 40), convex = blank(40, 40);
         PixelCanvas(general).fillPolygon(polygon.data(), int(polygon.size()), qRgb(0, 90, 0));
         PixelCanvas(convex).fillConvexPolygon(polygon.data(), int(polygon.size()), qRgb(0, 90, 0));
@@ -146,8 +146,7 @@ TEST(PixelCanvas, PolygonsThatTileThePlaneCoverEachPixelOnce) {
     for (int y = 0; y < 100; ++y) {
         for (int x = 0; x < 100; ++x) {
             const bool within = x + 0.5 >= 2.0 && x + 0.5 < end && y + 0.5 >= 2.0 && y + 0.5 < end;
-            ASSERT_EQ(image.pixel(x, y), within ? once.pixel(0, 0) : 0xffffffff)
-                << x << ", " << y;
+            ASSERT_EQ(image.pixel(x, y), within ? once.pixel(0, 0) : 0xffffffff) << x << ", " << y;
             inside += within;
         }
     }
@@ -193,8 +192,8 @@ TEST(PixelCanvas, ALinesCoverageInEachColumnAddsUpToItsAlpha) {
         const double from = steep ? a.y() : a.x(), to = steep ? b.y() : b.x();
         for (int i = 0; i < 64; ++i) {
             const double centre = i + 0.5;
-            const bool drawn = from < to ? centre >= from && centre < to
-                                         : centre <= from && centre > to;
+            const bool drawn =
+                from < to ? centre >= from && centre < to : centre <= from && centre > to;
             int sum = 0;
             for (int j = 0; j < 64; ++j) {
                 sum += steep ? darkness(image, j, i) : darkness(image, i, j);

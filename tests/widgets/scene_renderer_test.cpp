@@ -212,8 +212,8 @@ TEST(SceneRenderer, ShadedVoidCellsCarryAColourKey) {
         for (double t : {0.0, 1.0}) {
             const int added =
                 countInBottomRight(with, seen(t)) - countInBottomRight(without, seen(t));
-            EXPECT_GT(added, 200) << "shading " << int(shading) << ": no swatch of the key at "
-                                  << t << " of the scale";
+            EXPECT_GT(added, 200) << "shading " << int(shading) << ": no swatch of the key at " << t
+                                  << " of the scale";
         }
     }
     // Without shading there is no key.

@@ -49,9 +49,8 @@ inline std::shared_ptr<Snapshot> unmeasuredCopy(const Snapshot& complete) {
 inline SeriesTable makeSeries(const std::string& name, int rows, double peak) {
     SeriesTable t;
     t.test = name;
-    for (const char* column :
-         {"eps1", "epsv", "q_over_p", "Hdev", "Hsdev", "Hwdev", "Z", "Z_eff", "S", "Nv_over_Nvi",
-          "p", "q", "e"}) {
+    for (const char* column : {"eps1", "epsv", "q_over_p", "Hdev", "Hsdev", "Hwdev", "Z", "Z_eff",
+                               "S", "Nv_over_Nvi", "p", "q", "e"}) {
         t.columns.push_back({column, "-"});
     }
     for (int k = 0; k < rows; ++k) {

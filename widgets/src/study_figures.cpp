@@ -144,13 +144,11 @@ PlotPainter metricKnobPlot(const StudySpec& spec, const StudyPlan& plan,
             p.label = QObject::tr("base");
             p.x = -1;
             if (numeric) {
-                const auto run = std::find_if(plan.runs.begin(), plan.runs.end(),
-                                              [&](const StudyRun& r) {
-                                                  return r.setting == s.setting;
-                                              });
+                const auto run =
+                    std::find_if(plan.runs.begin(), plan.runs.end(),
+                                 [&](const StudyRun& r) { return r.setting == s.setting; });
                 const std::optional<double> value =
-                    run == plan.runs.end() ? std::nullopt
-                                           : knobValueIn(run->experimentText, knob);
+                    run == plan.runs.end() ? std::nullopt : knobValueIn(run->experimentText, knob);
                 p.x = value.value_or(0);
                 p.label = QObject::tr("base (%1)").arg(p.x, 0, 'g', 6);
             }

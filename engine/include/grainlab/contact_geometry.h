@@ -142,8 +142,13 @@ inline bool oneFormArcs(const std::vector<OvalShape>& shapes, OvalArcs& unit) {
     const auto scaled = [](const OvalShape& s) {
         const OvalArcs arcs = ovalArcs(s);
         const double a = s.halfWidth;
-        return OvalArcs{arcs.endOffset / a, arcs.sideOffset / a, arcs.endRadius / a,
-                        arcs.sideRadius / a, arcs.cosJunction, arcs.sinJunction, 2.0};
+        return OvalArcs{arcs.endOffset / a,
+                        arcs.sideOffset / a,
+                        arcs.endRadius / a,
+                        arcs.sideRadius / a,
+                        arcs.cosJunction,
+                        arcs.sinJunction,
+                        2.0};
     };
     const OvalArcs first = scaled(shapes.front());
     for (const OvalShape& s : shapes) {
@@ -217,8 +222,8 @@ inline QuadrantContact ovalContactQuadrant(double endOffsetA, double sideOffsetA
             endOfB ? endSignB * -(cB * w1 + sB * w2) : sideSignB * -(-sB * w1 + cB * w2);
         const double limitB = (endOfB ? cosJunctionB : sinJunctionB) - tolerance;
         // & and |, not && and ||: no branches, so that the engine's loop vectorises.
-        const bool admissible = (distance > 0.0) & (alongA >= limitA * distance) &
-                                (alongB >= limitB * distance);
+        const bool admissible =
+            (distance > 0.0) & (alongA >= limitA * distance) & (alongB >= limitB * distance);
         const double overlap = rA + rB - distance;
         // Keep the admissible pair with the smallest overlap (the first on ties); before any
         // is admissible, keep the first pair so that every number stays finite.

@@ -34,10 +34,10 @@ inline ContactLawParameters contactLawParameters(double normalStiffness, double 
 }
 
 struct ContactForce {
-    double normal = 0;      ///< f_n = k_n delta, along n (pushes B away from A) [N]
-    double tangential = 0;  ///< f_t on B, along t [N]
-    bool sliding = false;   ///< at the Coulomb limit this step
-    double slipWork = 0;    ///< energy dissipated by sliding this step [J]
+    double normal = 0;     ///< f_n = k_n delta, along n (pushes B away from A) [N]
+    double tangential = 0; ///< f_t on B, along t [N]
+    bool sliding = false;  ///< at the Coulomb limit this step
+    double slipWork = 0;   ///< energy dissipated by sliding this step [J]
 };
 
 // Every operation below is done unconditionally and the cases are chosen by selects: GCC keeps

@@ -28,12 +28,12 @@ struct Arc {
 enum ArcIndex : int { kRightEnd = 0, kTopSide = 1, kLeftEnd = 2, kBottomSide = 3 };
 
 struct OvalShape {
-    double width = 0;       ///< W = 2a [m]
-    double height = 0;      ///< H = 2b [m]
-    double halfWidth = 0;   ///< a [m], also the bounding-circle radius
-    double halfHeight = 0;  ///< b [m]
-    double endRadius = 0;   ///< r [m]
-    double sideRadius = 0;  ///< R [m]
+    double width = 0;         ///< W = 2a [m]
+    double height = 0;        ///< H = 2b [m]
+    double halfWidth = 0;     ///< a [m], also the bounding-circle radius
+    double halfHeight = 0;    ///< b [m]
+    double endRadius = 0;     ///< r [m]
+    double sideRadius = 0;    ///< R [m]
     double junctionAngle = 0; ///< phi [rad]: end arcs cover normals -phi..phi
     double cosJunction = 1;   ///< cos(phi)
     double sinJunction = 0;   ///< sin(phi)

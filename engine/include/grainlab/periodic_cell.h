@@ -11,7 +11,9 @@ namespace grainlab {
 
 using CellMatrix = std::array<double, 4>; ///< column-major 2x2 [m] (or [1/s] for L)
 
-inline double cellDeterminant(const CellMatrix& h) { return h[0] * h[3] - h[2] * h[1]; }
+inline double cellDeterminant(const CellMatrix& h) {
+    return h[0] * h[3] - h[2] * h[1];
+}
 
 inline CellMatrix cellInverse(const CellMatrix& h) {
     const double d = cellDeterminant(h);

@@ -64,9 +64,9 @@ public:
     void sample(double pressure, const SimulationState& state) override;
     /// Writes /checkpoints/<name> whole before it appears under its name: the state, the
     /// runner state (not for a peak checkpoint), the identity of its stage (attributes
-    /// stage_kind, test, pressure, axial_strain; the dataset theta_at_test_start), the contacts with the shapes'
-    /// outlines, the void cells and the running peak; for a peak checkpoint also the attribute
-    /// peak_checkpoint of its test. Flushes.
+    /// stage_kind, test, pressure, axial_strain; the dataset theta_at_test_start), the contacts
+    /// with the shapes' outlines, the void cells and the running peak; for a peak checkpoint also
+    /// the attribute peak_checkpoint of its test. Flushes.
     void checkpoint(const CheckpointData& data) override;
     /// Writes /warnings (replacing the older list whole, so that a resumed run's list is what
     /// its checkpoint held plus what it gave since): one entry per warning, datasets kind, test,

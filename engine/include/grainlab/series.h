@@ -10,16 +10,16 @@
 namespace grainlab {
 
 struct SeriesColumn {
-    std::string name; ///< e.g. "sigma22"
-    std::string unit; ///< e.g. "Pa"; "-" for dimensionless; the CSV header is "name [unit]"
+    std::string name;  ///< e.g. "sigma22"
+    std::string unit;  ///< e.g. "Pa"; "-" for dimensionless; the CSV header is "name [unit]"
     bool text = false; ///< true for `stage` only: not part of a numeric row
 };
 
 struct SeriesTable {
-    std::string test;                          ///< e.g. "p100kPa"
-    std::vector<SeriesColumn> columns;         ///< numeric columns, in order
-    std::vector<std::vector<double>> rows;     ///< rows[k][c] is column c of record k
-    std::vector<std::string> stages;           ///< stage name of record k
+    std::string test;                      ///< e.g. "p100kPa"
+    std::vector<SeriesColumn> columns;     ///< numeric columns, in order
+    std::vector<std::vector<double>> rows; ///< rows[k][c] is column c of record k
+    std::vector<std::string> stages;       ///< stage name of record k
     /// The identity of record k's stage as data (run file: stage_kind, pressure); empty for a
     /// table that does not come from the runner (e.g. read from a CSV file).
     std::vector<std::string> stageKinds; ///< "compaction", "equilibration", "shear"

@@ -11,10 +11,10 @@ namespace grainlab {
 /// The values are stored as integers in the runner state of run files ("phase"): never
 /// renumber them; a new test kind takes the next free value (Done stays 3).
 enum class StageKind {
-    Compaction = 0,    ///< isotropic compaction to a confining pressure (saves a sample)
-    Equilibration = 1, ///< a sample at rest again under the test's friction, before its test
-    Shear = 2,         ///< the drained biaxial shear test
-    Done = 3,          ///< the run is finished
+    Compaction = 0,     ///< isotropic compaction to a confining pressure (saves a sample)
+    Equilibration = 1,  ///< a sample at rest again under the test's friction, before its test
+    Shear = 2,          ///< the drained biaxial shear test
+    Done = 3,           ///< the run is finished
     ConstantVolume = 4, ///< axis 1 strained, the cell's area held (the undrained analogue)
     ConstantP = 5,      ///< axis 1 strained, sigma22 servoed to keep p
     StressPath = 6,     ///< axis 1 strained, sigma22 servoed along a linear path in sigma11
@@ -27,8 +27,8 @@ enum class StageKind {
 bool isTestStage(StageKind kind);
 
 /// "compaction", "equilibration", "shear", "done", "constant_volume", "constant_p",
-/// "stress_path", "cyclic" or "probes" (the run file's checkpoint kind; a test's kind is the name its experiment file
-/// gives it, "shear" for the drained test).
+/// "stress_path", "cyclic" or "probes" (the run file's checkpoint kind; a test's kind is the name
+/// its experiment file gives it, "shear" for the drained test).
 std::string stageKindName(StageKind kind);
 /// The kind of a name stageKindName() gives; nullopt for any other text.
 std::optional<StageKind> stageKindFromName(const std::string& name);

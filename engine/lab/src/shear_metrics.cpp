@@ -113,7 +113,8 @@ ShearMetrics shearMetrics(const SeriesTable& test, double confiningPressure) {
     // values at a metric strain are at eps1 = -strain.
     // (Cyclic tests and probes go both ways: never mirrored.)
     const double sign =
-        isMonotonicTable(test) && eps1 >= 0 && test.rows[rows.back()][std::size_t(eps1)] < 0 ? -1.0 : 1.0;
+        isMonotonicTable(test) && eps1 >= 0 && test.rows[rows.back()][std::size_t(eps1)] < 0 ? -1.0
+                                                                                             : 1.0;
     const auto shearCurve = [&](const std::string& column) {
         Curve c = grainlab::shearCurve(test, column);
         for (double& x : c.x) {

@@ -209,8 +209,7 @@ StudySummary summariseStudy(const StudySpec& spec, const StudyPlan& plan,
                     // One run of the setting must be as good as one of the reference: the
                     // shift of the mean and any seed scatter beyond the reference's together
                     // stay within the tolerance (a curve error is already of mean curves).
-                    const double widening =
-                        curve ? 0.0 : std::max(0.0, m.scatter.sd - ref.sd);
+                    const double widening = curve ? 0.0 : std::max(0.0, m.scatter.sd - ref.sd);
                     m.withinTolerance = std::abs(*m.error) + widening <= allowed;
                 }
                 if (std::find(spec.deciding.begin(), spec.deciding.end(), name) !=

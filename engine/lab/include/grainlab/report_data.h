@@ -74,7 +74,6 @@ struct ReportOptions {
     double dilatancyWindow = 0.005; ///< the eps1 window of the smoothed dilatancy index [-]
 };
 
-
 /// The responses of a probes table: each probe's (d sigma11, d sigma22) minus the zero probe's
 /// (rows: the start, the zero probe, the K probes); nothing when K is not even and >= 4. With
 /// `complete` false, the responses of the probes recorded so far (a probe set still running),

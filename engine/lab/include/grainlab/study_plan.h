@@ -64,13 +64,13 @@ struct Tolerance {
 
 struct StudySpec {
     std::string name = "study";
-    std::string sourcePath;     ///< the study file ("" if built in code)
+    std::string sourcePath; ///< the study file ("" if built in code)
     /// The study file's text with its base experiment written inline: what a study folder keeps
     /// (study.json), so that it is complete on its own.
     std::string sourceText;
     std::string costMeasure = "cpu_seconds"; ///< "cpu_seconds", "wall_seconds" or "grain_steps"
-    std::string baseExperiment; ///< the base experiment file's text (JSON)
-    std::string baseSource;     ///< where it came from (a path, or "<study>:base")
+    std::string baseExperiment;              ///< the base experiment file's text (JSON)
+    std::string baseSource;                  ///< where it came from (a path, or "<study>:base")
     std::vector<Knob> knobs;
     StudyDesign design = StudyDesign::OneAtATime;
     /// The reference setting: a level per knob; knobs left out stay as the base experiment says.

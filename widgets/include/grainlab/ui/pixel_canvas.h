@@ -46,7 +46,7 @@ private:
     void line(double ax, double ay, double bx, double by, QRgb opaque, int alpha);
     void fillSpan(int y, int x0, int x1, QRgb premultiplied);
 
-    uchar* bits_; ///< the image's, which must outlive the canvas
+    uchar* bits_;      ///< the image's, which must outlive the canvas
     qsizetype stride_; ///< bytes per row
     int width_, height_;
     double scale_;

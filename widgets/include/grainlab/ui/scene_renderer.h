@@ -100,7 +100,7 @@ struct SceneOptions {
     VoidCellShading voidCells = VoidCellShading::Off;
     bool contactRose = false; ///< polar histogram of contact normals in a corner
     bool scaleBar = true;
-    bool caption = true;              ///< step, stage and eps1 at the top left
+    bool caption = true; ///< step, stage and eps1 at the top left
     /// The key of the void-cell colours (valence, or area over the mean area) at the bottom
     /// right, when void cells are shaded.
     bool colourKey = true;
