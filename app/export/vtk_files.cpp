@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "common/markup_text.h"
+
 namespace grainlab {
 namespace {
 
@@ -53,30 +55,6 @@ const void* arrayBytes(const VtkArray& a) {
     }
 }
 
-/// XML attribute text: the names are ours, but a test name could hold anything.
-std::string escaped(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
-}
-
 /// The appended data block: each array is a UInt64 byte count followed by its bytes; the XML
 /// refers to it by offsets from the block's start (after its leading '_').
 class AppendedData {
@@ -102,7 +80,8 @@ std::string arrayElement(const VtkArray& a, AppendedData& appended, bool field,
     std::string tuples = field ? fmt::format(" NumberOfTuples=\"{}\"", a.tuples()) : std::string();
     return fmt::format("{}<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\"{} "
                        "format=\"appended\" offset=\"{}\"/>\n",
-                       indent, typeName(a.type), escaped(a.name), a.components, tuples, offset);
+                       indent, typeName(a.type), markupEscaped(a.name), a.components, tuples,
+                       offset);
 }
 
 } // namespace
@@ -228,7 +207,7 @@ void writePvd(const std::string& path, const std::vector<PvdEntry>& entries,
     for (const PvdEntry& e : entries) {
         xml += fmt::format("    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"{}\" name=\"{}\" "
                            "file=\"{}\"/>\n",
-                           e.time, e.part, escaped(e.name), escaped(e.file));
+                           e.time, e.part, markupEscaped(e.name), markupEscaped(e.file));
     }
     xml += "  </Collection>\n</VTKFile>\n";
     std::ofstream out(path, std::ios::binary | std::ios::trunc);

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "common/atomic_file.h"
+#include "common/markup_text.h"
 
 namespace grainlab {
 namespace fs = std::filesystem;
@@ -18,29 +19,6 @@ constexpr const char* kPublishedStudy =
     "Published values: the two-dimensional DEM study of drained biaxial compression of 8450 "
     "ovals (aspect ratio 0.6) at 15, 25, 50 and 100 kPa that GrainLab's reference experiment "
     "reproduces, computed with the OVAL program (M. R. Kuhn, University of Portland).";
-
-std::string htmlEscape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
-}
 
 /// The comparison of one cell with the published value, in words.
 std::string comparisonText(const Scatter& s, const PublishedValue& published, int digits) {
@@ -356,35 +334,35 @@ std::string reportHtml(const ReportPage& page) {
         "figure{margin:1.5em 0}img{max-width:100%;border:1px solid #ddd}"
         "figcaption{font-style:italic}</style></head><body>\n"
         "<h1>Report: biaxial compression of ovals</h1>\n<p>" +
-        htmlEscape(sourcesText(page)) + " " + htmlEscape(kPublishedStudy) +
+        markupEscaped(sourcesText(page)) + " " + markupEscaped(kPublishedStudy) +
         " Curves are means over the runs with a ±1σ band; numbers are mean ± sample standard "
         "deviation over the runs.</p>\n<h2>Headline numbers</h2>\n<table>\n<tr>";
     const Table t = headlineRows(page);
     for (const std::string& c : t.header) {
-        h += "<th>" + htmlEscape(c) + "</th>";
+        h += "<th>" + markupEscaped(c) + "</th>";
     }
     h += "</tr>\n";
     for (const auto& r : t.rows) {
         h += "<tr>";
         for (const std::string& c : r) {
-            h += "<td>" + htmlEscape(c) + "</td>";
+            h += "<td>" + markupEscaped(c) + "</td>";
         }
         h += "</tr>\n";
     }
-    h += "</table>\n<p>" + htmlEscape(pooledText(page.pooled)) + "</p>\n";
+    h += "</table>\n<p>" + markupEscaped(pooledText(page.pooled)) + "</p>\n";
     if (page.criticalState) {
-        h += "<h2>Critical state</h2>\n<p>" + htmlEscape(criticalStateText(*page.criticalState)) +
-             "</p>\n";
+        h += "<h2>Critical state</h2>\n<p>" +
+             markupEscaped(criticalStateText(*page.criticalState)) + "</p>\n";
     }
     h += "<h2>Figures</h2>\n";
     for (const auto& [stem, caption] : pageFigures(page)) {
         const fs::path png = fs::path(page.figureFolder) / (stem + ".png");
         h += "<figure>";
         if (fs::exists(png)) {
-            h += "<img alt=\"" + htmlEscape(stem) + "\" src=\"data:image/png;base64," +
+            h += "<img alt=\"" + markupEscaped(stem) + "\" src=\"data:image/png;base64," +
                  base64(readWholeFile(png.string())) + "\">";
         }
-        h += "<figcaption>" + htmlEscape(caption) + " (data: figures/" + htmlEscape(stem) +
+        h += "<figcaption>" + markupEscaped(caption) + " (data: figures/" + markupEscaped(stem) +
              ".csv)</figcaption></figure>\n";
     }
     h += "</body></html>\n";
