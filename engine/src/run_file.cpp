@@ -625,7 +625,7 @@ std::uint64_t voidCellBytes(const VoidCellSet& cells) {
 
 void RunFile::checkpoint(const std::string& name, const SimulationState& state,
                          const std::string& runnerState) {
-    // With its void cells (written next): about as many cells as grains / 2.
+    // Room as for a checkpoint with its void cells (about as many cells as grains / 2).
     const std::uint64_t bytes = stateBytes(state) + runnerState.size() + state.grains.size() * 64;
     impl_->write(bytes, "checkpoint " + name, [&] { checkpointNow(name, state, runnerState); });
 }
