@@ -22,6 +22,7 @@
 #include "common/progress_bar.h"
 #include "grainlab/assembly.h"
 #include "grainlab/measures.h"
+#include "grainlab/random.h"
 #include "grainlab/scenes/compacted_scene.h"
 #include "grainlab/simulation.h"
 
@@ -185,36 +186,108 @@ double medianRatio(const Series& a, const Series& b) {
 
 // ---------------------------------------------------------------------------------------------
 
+/// The same state with its grains renumbered in the order `order` (grain k of the result is
+/// grain order[k]), without a neighbour list.
+SimulationState renumbered(const SimulationState& s, const std::vector<std::size_t>& order) {
+    SimulationState out;
+    out.shapes = s.shapes;
+    out.parameters = s.parameters;
+    out.axes = s.axes;
+    out.cell = s.cell;
+    out.grains.resize(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const std::size_t i = order[k];
+        out.grains.x1[k] = s.grains.x1[i];
+        out.grains.x2[k] = s.grains.x2[i];
+        out.grains.theta[k] = s.grains.theta[i];
+        out.grains.v1[k] = s.grains.v1[i];
+        out.grains.v2[k] = s.grains.v2[i];
+        out.grains.omega[k] = s.grains.omega[i];
+        out.grains.shape[k] = s.grains.shape[i];
+    }
+    return out;
+}
+
+/// A random order of `n` grains (Fisher-Yates).
+std::vector<std::size_t> randomOrder(std::size_t n, std::uint64_t seed) {
+    std::vector<std::size_t> order(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        order[k] = k;
+    }
+    Random random(seed);
+    for (std::size_t k = n - 1; k > 0; --k) {
+        std::swap(order[k], order[random.below(k + 1)]);
+    }
+    return order;
+}
+
+/// How far apart in memory a neighbour pair's grains are: the median of |i - j| over the
+/// neighbour list a simulation of `s` builds.
+double medianIndexGap(const SimulationState& s) {
+    const Simulation sim(s);
+    const PairArrays& pairs = sim.stateRef().pairs;
+    std::vector<double> gaps(pairs.size());
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+        gaps[p] = std::abs(double(pairs.second[p]) - double(pairs.first[p]));
+    }
+    return median(gaps);
+}
+
 int runScaling(const BenchOptions& o, const std::vector<std::pair<std::string, double>>& shapes,
                const std::vector<int>& threadCounts) {
-    // One compacted base of 1000 grains per shape, tiled 1x1, 4x2, 8x4 and 16x8: the same dense
-    // structure and contacts per grain at every size, without compacting 128k grains.
-    const std::vector<std::pair<int, int>> tilings = {{1, 1}, {4, 2}, {8, 4}, {16, 8}};
-    fmt::print("{:<6} {:>7} {:>8} {:>8} {:>16} {:>16} {:>14} {:>14}\n", "shape", "grains",
-               "threads", "steps", "grain-steps/s", "ns/grain-step", "contacts/grain",
-               "bytes/grain");
+    // One compacted base of 1000 grains per shape, tiled 1x1 to 32x16: the same dense structure
+    // and contacts per grain at every size, without compacting 512k grains. Every size runs the
+    // same steps from its start (the same strain path, so the same contacts per grain), repeated
+    // until it has done the same grain-steps as the others. Two orders of the grains: as tiled
+    // (tile by tile, each tile in its generated grid's order: neighbours close in memory), and
+    // shuffled (what losing that order costs).
+    const std::vector<std::pair<int, int>> tilings = {{1, 1}, {4, 2}, {8, 4}, {16, 8}, {32, 16}};
+    const std::size_t largest = 1000 * 32 * 16;
+    const std::int64_t steps =
+        std::max<std::int64_t>(200, std::int64_t(double(o.steps) * 8450.0 / double(largest)));
+    fmt::print("{:<6} {:<8} {:>7} {:>8} {:>12} {:>16} {:>9} {:>14} {:>14} {:>12}\n", "shape",
+               "order", "grains", "threads", "steps x runs", "ns/grain-step", "vs 8000",
+               "contacts/grain", "bytes/grain", "median|i-j|");
     for (const auto& [name, aspect] : shapes) {
         const SimulationState base = compactedAssembly(1000, aspect, o.seed);
-        for (const auto& [t1, t2] : tilings) {
-            const SimulationState dense = tiled(base, t1, t2);
-            const std::size_t n = dense.grains.size();
-            // About the same total work per size (at least 200 steps).
-            const std::int64_t steps =
-                std::max<std::int64_t>(200, std::int64_t(double(o.steps) * 8450.0 / double(n)));
-            for (int threads : threadCounts) {
-                std::vector<double> rates;
-                RunResult last;
-                for (int round = 0; round < o.rounds; ++round) {
-                    fmt::print(stderr, "scaling: {} {} grains, {} thread(s), round {}/{}\n", name,
-                               n, threads, round + 1, o.rounds);
-                    last = timeEngine(dense, threads, steps, false);
-                    rates.push_back(last.grainStepsPerSecond);
+        for (const bool shuffle : {false, true}) {
+            std::map<int, double> at8000; // ns per grain-step at 8000 grains, by threads
+            for (const auto& [t1, t2] : tilings) {
+                SimulationState dense = tiled(base, t1, t2);
+                const std::size_t n = dense.grains.size();
+                if (shuffle) {
+                    dense = renumbered(dense, randomOrder(n, o.seed));
                 }
-                const double rate = median(rates);
-                fmt::print("{:<6} {:>7} {:>8} {:>8} {:>16.4g} {:>16.2f} {:>14.3f} {:>14.0f}\n",
-                           name, n, threads, steps, rate, 1e9 / rate, last.contactsPerGrain,
-                           last.bytesPerGrain);
-                std::fflush(stdout);
+                const double gap = medianIndexGap(dense);
+                const std::int64_t runs =
+                    std::max<std::int64_t>(1, std::llround(double(largest) / double(n)));
+                for (int threads : threadCounts) {
+                    std::vector<double> rates;
+                    RunResult last;
+                    for (int round = 0; round < o.rounds; ++round) {
+                        fmt::print(stderr, "scaling: {} {} {} grains, {} thread(s), round {}/{}\n",
+                                   name, shuffle ? "shuffled" : "tiled", n, threads, round + 1,
+                                   o.rounds);
+                        double seconds = 0;
+                        for (std::int64_t r = 0; r < runs; ++r) {
+                            last = timeEngine(dense, threads, steps, false);
+                            seconds += double(n) * double(steps) / last.grainStepsPerSecond;
+                        }
+                        rates.push_back(double(n) * double(steps * runs) / seconds);
+                    }
+                    const double ns = 1e9 / median(rates);
+                    if (n == 8000) {
+                        at8000[threads] = ns;
+                    }
+                    const std::string ratio =
+                        at8000.count(threads) ? fmt::format("{:.2f}", ns / at8000[threads]) : "";
+                    fmt::print("{:<6} {:<8} {:>7} {:>8} {:>12} {:>16.2f} {:>9} {:>14.3f} {:>14.0f} "
+                               "{:>12.0f}\n",
+                               name, shuffle ? "shuffled" : "tiled", n, threads,
+                               fmt::format("{} x {}", steps, runs), ns, ratio,
+                               last.contactsPerGrain, last.bytesPerGrain, gap);
+                    std::fflush(stdout);
+                }
             }
         }
     }
@@ -248,7 +321,8 @@ void addBenchOptions(CLI::App& command, BenchOptions& o) {
         ->capture_default_str();
     command.add_option("--lammps", o.lammpsExecutable, "LAMMPS executable")->capture_default_str();
     command.add_flag("--scaling", o.scaling,
-                     "cost per grain-step at 1k, 8k, 32k and 128k grains (tiled assemblies)");
+                     "cost per grain-step at 1k to 512k grains (tiled assemblies, as tiled and "
+                     "shuffled)");
     command.add_flag("--gui", o.gui,
                      "the live window instead: engine steps/s headless and in the window "
                      "(--gui-steps of --experiment's first shear, --rounds), and the scene's "
@@ -257,7 +331,8 @@ void addBenchOptions(CLI::App& command, BenchOptions& o) {
         ->capture_default_str();
     command.add_flag("--gui-overlays", o.guiOverlays,
                      "--gui: the window shows strong force chains and void cells by valence "
-                     "(the whole cell in view) while the engine's slowdown is measured, instead "
+                     "(the whole cell in view) while the engine's slowdown is measured, "
+                     "instead "
                      "of its default view");
     command.add_option("--experiment", o.experiment, "--gui: experiment whose first test is run")
         ->capture_default_str();

@@ -35,7 +35,7 @@ struct BenchOptions {
     bool limit = false;
     std::string lammpsDirectory = resourcePath("bench/lammps");
     std::string lammpsExecutable = "lmp";
-    bool scaling = false; ///< cost per grain-step at 1k, 8k, 32k, 128k grains instead
+    bool scaling = false; ///< cost per grain-step at 1k to 512k grains instead
     /// The live window instead (window_bench.h): engine speed headless and in the window for
     /// `guiSteps` steps of `experiment`'s first shear (threads: the first count of `threads`),
     /// and the scene's frame time with `grains` ovals.

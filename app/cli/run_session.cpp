@@ -100,16 +100,19 @@ void RunSession::start() {
 bool RunSession::advance(std::int64_t steps) {
     const bool more = runner_->advance(steps);
     if (more) {
-        cost_->saveEvery(5.0, runner_->stepsTaken(), config_.assembly.grainCount,
-                         runner_->simulation().stateRef().parameters.threads);
+        cost_->saveEvery(5.0, work());
     }
     return more;
 }
 
+RunCostMeter::Work RunSession::work() const {
+    return {runner_->stepsTaken(), config_.assembly.grainCount,
+            runner_->simulation().stateRef().parameters.threads, runner_->times()};
+}
+
 void RunSession::saveCost(bool finished) {
     if (runner_) {
-        cost_->save(runner_->stepsTaken(), config_.assembly.grainCount,
-                    runner_->simulation().stateRef().parameters.threads, finished);
+        cost_->save(work(), finished);
     }
 }
 

@@ -66,6 +66,8 @@ private:
     RunSession() = default;
     void openOutput();
     void saveCost(bool finished);
+    /// What this process has done so far, for the cost record.
+    RunCostMeter::Work work() const;
 
     ExperimentConfig config_;
     std::string folder_;

@@ -36,6 +36,11 @@ RunCostRecord readRunCost(const std::string& runFolder) {
         c.grainSteps = j.at("grain_steps").get<std::int64_t>();
         c.threads = j.at("threads").get<int>();
         c.processes = j.at("processes").get<int>();
+        if (j.contains("seconds")) {
+            const auto& t = j.at("seconds");
+            c.times = {t.at("stepping").get<double>(), t.at("records").get<double>(),
+                       t.at("checkpoints").get<double>(), t.at("events").get<double>()};
+        }
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error(fmt::format("{}: not a cost record: {}", path, e.what()));
     }
@@ -51,6 +56,12 @@ void writeRunCost(const std::string& runFolder, const RunCostRecord& c) {
     j["grain_steps"] = c.grainSteps;
     j["threads"] = c.threads;
     j["processes"] = c.processes;
+    nlohmann::ordered_json t;
+    t["stepping"] = c.times.stepping;
+    t["records"] = c.times.records;
+    t["checkpoints"] = c.times.checkpoints;
+    t["events"] = c.times.events;
+    j["seconds"] = t;
     writeFileAtomically(runCostPath(runFolder), j.dump(2) + "\n");
 }
 
@@ -74,25 +85,28 @@ double processorSeconds() {
 
 } // namespace
 
-void RunCostMeter::save(std::int64_t steps, std::int64_t grains, int threads, bool finished) {
+void RunCostMeter::save(const Work& work, bool finished) {
     const auto now = std::chrono::steady_clock::now();
     RunCostRecord c = before_;
     c.finished = finished;
     c.wallSeconds += std::chrono::duration<double>(now - start_).count();
     c.cpuSeconds += processorSeconds();
-    c.steps += steps;
-    c.grainSteps += steps * grains;
-    c.threads = threads;
+    c.steps += work.steps;
+    c.grainSteps += work.steps * work.grains;
+    c.threads = work.threads;
     c.processes += 1;
+    c.times.stepping += work.times.stepping;
+    c.times.records += work.times.records;
+    c.times.checkpoints += work.times.checkpoints;
+    c.times.events += work.times.events;
     writeRunCost(folder_, c);
     lastSave_ = now;
 }
 
-void RunCostMeter::saveEvery(double interval, std::int64_t steps, std::int64_t grains,
-                             int threads) {
+void RunCostMeter::saveEvery(double interval, const Work& work) {
     const auto now = std::chrono::steady_clock::now();
     if (std::chrono::duration<double>(now - lastSave_).count() >= interval) {
-        save(steps, grains, threads, false);
+        save(work, false);
     }
 }
 

@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <string>
 
+#include "grainlab/experiment_runner.h"
+
 namespace grainlab {
 
 struct RunCostRecord {
@@ -19,6 +21,11 @@ struct RunCostRecord {
     std::int64_t grainSteps = 0; ///< steps times grains stepped
     int threads = 0;             ///< engine threads of the last process
     int processes = 0;           ///< processes that worked on the run
+    /// Where the wall time went [s], summed over processes (ExperimentRunner::times): stepping,
+    /// records, checkpoints and the stages' other events. Zero in a record written before these
+    /// were kept. The rest of wall_seconds is the process's own (reading the experiment, opening
+    /// the run file, starting up).
+    RunnerTimes times;
 };
 
 /// cost.json in `runFolder`; all zeros (not finished) when there is none. Throws
@@ -37,10 +44,16 @@ std::string runCostPath(const std::string& runFolder);
 class RunCostMeter {
 public:
     RunCostMeter(std::string runFolder, bool continuing);
-    /// Writes cost.json now. `steps` are this process's steps so far.
-    void save(std::int64_t steps, std::int64_t grains, int threads, bool finished);
+    /// What this process has done so far: its steps, where its runner's time went.
+    struct Work {
+        std::int64_t steps = 0, grains = 0;
+        int threads = 0;
+        RunnerTimes times;
+    };
+    /// Writes cost.json now.
+    void save(const Work& work, bool finished);
     /// Writes it when `interval` seconds have passed since the last write.
-    void saveEvery(double interval, std::int64_t steps, std::int64_t grains, int threads);
+    void saveEvery(double interval, const Work& work);
 
 private:
     std::string folder_;

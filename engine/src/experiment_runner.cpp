@@ -143,24 +143,38 @@ ExperimentRunner::~ExperimentRunner() = default;
 bool ExperimentRunner::advance(std::int64_t maxSteps) {
     Impl& m = *impl_;
     RunContext& ctx = m.ctx;
+    // The events' own time: their wall time less the records and checkpoints made in them.
+    double eventsWall = 0;
+    const double recordsBefore = ctx.times.records, checkpointsBefore = ctx.times.checkpoints;
     if (ctx.stageDone) {
+        const AddWallTime timed(eventsWall);
         m.continueAfterStage(); // resumed from a stage-end checkpoint
     }
     std::int64_t done = 0;
     while (done < maxSteps && !ctx.done) {
         const std::int64_t chunk = std::min(ctx.stage->stepsToNextEvent(ctx), maxSteps - done);
-        ctx.sim->advance(chunk);
+        {
+            const AddWallTime timed(ctx.times.stepping);
+            ctx.sim->advance(chunk);
+        }
         done += chunk;
         ctx.stepsTaken += chunk;
+        const AddWallTime timed(eventsWall);
         if (ctx.stage->handleEvents(ctx)) {
             m.endStage();
         }
     }
+    ctx.times.events += eventsWall - (ctx.times.records - recordsBefore) -
+                        (ctx.times.checkpoints - checkpointsBefore);
     return !ctx.done;
 }
 
 std::int64_t ExperimentRunner::stepsTaken() const {
     return impl_->ctx.stepsTaken;
+}
+
+RunnerTimes ExperimentRunner::times() const {
+    return impl_->ctx.times;
 }
 
 bool ExperimentRunner::finished() const {

@@ -35,7 +35,7 @@ std::vector<std::int32_t> contactDegrees(const ContactNetwork& network) {
 }
 
 double forceMagnitudeSquared(const ContactRecord& r) {
-    return r.normalForce * r.normalForce + r.tangentialForce * r.tangentialForce;
+    return contactForceSquared(r.normalForce, r.tangentialForce);
 }
 
 } // namespace
@@ -189,9 +189,8 @@ std::int32_t slidingContactCount(const ContactNetwork& network) {
 }
 
 double unbalancedForceIndex(const ContactNetwork& network) {
-    const std::size_t m = network.contacts.size();
     const std::int32_t n = network.grainCount;
-    if (m == 0 || n == 0) {
+    if (network.contacts.empty() || n == 0) {
         return 0.0;
     }
     if (network.netForce1.size() != static_cast<std::size_t>(n) ||
@@ -204,15 +203,22 @@ double unbalancedForceIndex(const ContactNetwork& network) {
     for (const ContactRecord& r : network.contacts) {
         contactSum += forceMagnitudeSquared(r);
     }
-    if (!(contactSum > 0.0)) {
+    return unbalancedForceIndex(contactSum, network.contacts.size(), network.netForce1,
+                                network.netForce2);
+}
+
+double unbalancedForceIndex(double contactSum, std::size_t contacts,
+                            const std::vector<double>& netForce1,
+                            const std::vector<double>& netForce2) {
+    const std::size_t n = netForce1.size();
+    if (contacts == 0 || n == 0 || !(contactSum > 0.0)) {
         return 0.0;
     }
     double grainSum = 0;
-    for (std::int32_t i = 0; i < n; ++i) {
-        grainSum += network.netForce1[i] * network.netForce1[i] +
-                    network.netForce2[i] * network.netForce2[i];
+    for (std::size_t i = 0; i < n; ++i) {
+        grainSum += netForce1[i] * netForce1[i] + netForce2[i] * netForce2[i];
     }
-    return std::sqrt((grainSum / n) / (contactSum / m)) * 100.0;
+    return std::sqrt((grainSum / double(n)) / (contactSum / double(contacts))) * 100.0;
 }
 
 double voidRatio(const ContactNetwork& network) {

@@ -93,6 +93,7 @@ RecordInputs RunContext::recordInputs(const MeasureSet& measures, bool asLastRec
 }
 
 void RunContext::recordNow() {
+    const AddWallTime timed(times.records);
     const ContactNetwork network = sim->contactNetwork();
     const MeasureSet measures = computeMeasures(network);
     stage->noteRecord(measures);
@@ -149,6 +150,7 @@ void RunContext::checkpoint(const std::string& label, const StageIdentity& id) {
     if (!output) {
         return;
     }
+    const AddWallTime timed(times.checkpoints);
     const std::string name = nextCheckpointName(label);
     const SimulationState state = sim->state();
     const ContactNetwork network = sim->contactNetwork();

@@ -5,6 +5,7 @@
 // record a row, write a checkpoint or give a warning. Stage-kind state lives in the stage
 // objects, not here. Used on the thread that drives the runner.
 
+#include <chrono>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "grainlab/experiment.h"
+#include "grainlab/experiment_runner.h"
 #include "grainlab/measures.h"
 #include "grainlab/run_output.h"
 #include "grainlab/run_warning.h"
@@ -33,6 +35,23 @@ int threadsFor(const ExperimentConfig& config);
 /// Steps of the shear test for an axial strain (at least one).
 std::int64_t strideOf(const ExperimentConfig& config, double strain);
 
+/// Adds the wall time from its construction to its end to `seconds`.
+class AddWallTime {
+public:
+    explicit AddWallTime(double& seconds)
+        : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
+    ~AddWallTime() {
+        seconds_ +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+    AddWallTime(const AddWallTime&) = delete;
+    AddWallTime& operator=(const AddWallTime&) = delete;
+
+private:
+    double& seconds_;
+    std::chrono::steady_clock::time_point start_;
+};
+
 struct RunContext {
     ExperimentConfig config;
     RunOutput* output = nullptr;
@@ -41,6 +60,7 @@ struct RunContext {
     bool done = false;
     bool stageDone = false;      ///< `stage` has ended; the next one is still to start
     std::int64_t stepsTaken = 0; ///< steps advanced by this runner object (its cost)
+    RunnerTimes times;           ///< where this runner object's wall time has gone
 
     std::int64_t stageStartStep = 0;
     double length1At0 = 0, length2At0 = 0, areaAt0 = 0; ///< strain references [m], [m^2]

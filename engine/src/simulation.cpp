@@ -11,6 +11,7 @@
 #include "fast_trig.h"
 #include "grainlab/contact_geometry.h"
 #include "grainlab/contact_law.h"
+#include "grainlab/measures.h"
 #include "grainlab/periodic_cell.h"
 #include "grainlab/time_step.h"
 
@@ -615,6 +616,21 @@ std::size_t Simulation::contactCount() const {
         std::count_if(normalForce_.begin(), normalForce_.end(), [](double f) { return f > 0.0; }));
 }
 
+double Simulation::unbalancedForceIndex() const {
+    // The touching pairs in pair order: the network's contacts (contactNetwork()).
+    double contactSum = 0;
+    std::size_t contacts = 0;
+    for (std::size_t p = 0; p < s_.pairs.size(); ++p) {
+        if (normalForce_[p] > 0.0) {
+            contactSum += contactForceSquared(normalForce_[p], s_.pairs.tangentialForce[p]);
+            ++contacts;
+        }
+    }
+    std::vector<double> f1, f2, torque;
+    gatherForces(f1, f2, torque);
+    return grainlab::unbalancedForceIndex(contactSum, contacts, f1, f2);
+}
+
 ContactNetwork Simulation::contactNetwork() const {
     ContactNetwork net;
     const std::size_t n = s_.grains.size();
@@ -640,17 +656,26 @@ ContactNetwork Simulation::contactNetwork() const {
         net.x2[i] = g.x2[i] - (h[1] * w1 + h[3] * w2);
         net.grainArea[i] = s_.shapes[g.shape[i]].area;
     }
+    // The touching pairs in pair order; each contact's record is its own (the scalar contact
+    // geometry, the network's main cost), so the records are made on the engine's threads.
+    std::vector<std::int32_t> touching;
     for (std::size_t p = 0; p < s_.pairs.size(); ++p) {
-        if (!(normalForce_[p] > 0.0)) {
-            continue;
+        if (normalForce_[p] > 0.0) {
+            touching.push_back(static_cast<std::int32_t>(p));
         }
+    }
+    net.contacts.resize(touching.size());
+    const std::int64_t m = static_cast<std::int64_t>(touching.size());
+#pragma omp parallel for schedule(static) num_threads(s_.parameters.threads)
+    for (std::int64_t k = 0; k < m; ++k) {
+        const std::int32_t p = touching[k];
         const std::int32_t i = s_.pairs.first[p], j = s_.pairs.second[p];
         const double k1 = s_.pairs.shift1[p], k2 = s_.pairs.shift2[p];
         const double l1 = g.x1[j] + h[0] * k1 + h[2] * k2 - g.x1[i];
         const double l2 = g.x2[j] + h[1] * k1 + h[3] * k2 - g.x2[i];
         // The geometry the pair loop used for this force.
         const ContactGeometry c = pairGeometry(p, l1, l2);
-        ContactRecord r;
+        ContactRecord& r = net.contacts[k];
         r.first = i;
         r.second = j;
         r.shift1 = s_.pairs.shift1[p] + wrap1[j] - wrap1[i];
@@ -665,7 +690,6 @@ ContactNetwork Simulation::contactNetwork() const {
         r.normalForce = normalForce_[p];
         r.tangentialForce = s_.pairs.tangentialForce[p];
         r.sliding = s_.pairs.sliding[p] != 0;
-        net.contacts.push_back(r);
     }
     return net;
 }

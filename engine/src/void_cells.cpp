@@ -198,6 +198,13 @@ VoidCellSet computeVoidCells(const ContactNetwork& network,
         }
         ++set.faceCount;
         VoidCell cell;
+        std::size_t sides = 0;
+        for (std::int32_t h = start; sides == 0 || h != start; h = he.next(h)) {
+            ++sides;
+        }
+        cell.grains.reserve(sides);
+        cell.vertices1.reserve(2 * sides);
+        cell.vertices2.reserve(2 * sides);
         double p1 = 0, p2 = 0, scale = 0;
         std::int64_t winding1 = 0, winding2 = 0;
         // next() is a permutation of the half-edges, so the walk returns to `start`.

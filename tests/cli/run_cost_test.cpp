@@ -55,6 +55,13 @@ TEST(RunCost, SummedOverTheProcessesOfAResumedRunAndFinishedOnlyAtTheEnd) {
     EXPECT_GT(whole.cpuSeconds, 0);
     EXPECT_GE(whole.wallSeconds, 0.5 * whole.cpuSeconds);
     EXPECT_EQ(whole.threads, 1);
+    // Where the wall time went: each part measured, together no more than the process's wall.
+    const RunnerTimes& t = whole.times;
+    EXPECT_GT(t.stepping, 0);
+    EXPECT_GT(t.records, 0);
+    EXPECT_GT(t.checkpoints, 0);
+    EXPECT_GE(t.events, 0);
+    EXPECT_LE(t.stepping + t.records + t.checkpoints + t.events, whole.wallSeconds);
 
     // Interrupted (Ctrl-C) after 3000 steps, then resumed.
     const std::string parts = (base / "parts").string();
@@ -71,6 +78,8 @@ TEST(RunCost, SummedOverTheProcessesOfAResumedRunAndFinishedOnlyAtTheEnd) {
     // The resumed process redid the steps since the checkpoint: at least the whole run's steps.
     EXPECT_GE(total.steps, whole.steps);
     EXPECT_GT(total.cpuSeconds, first.cpuSeconds);
+    EXPECT_GT(total.times.stepping, first.times.stepping);
+    EXPECT_GT(total.times.checkpoints, first.times.checkpoints);
 }
 
 TEST(RunCost, AFinishedRunWhoseRecordMissedTheEndIsMarkedFinishedOnResume) {
@@ -99,6 +108,15 @@ TEST(RunCost, ABadRecordIsRefusedNamingTheFile) {
         EXPECT_NE(std::string(e.what()).find("cost.json"), std::string::npos) << e.what();
     }
     EXPECT_FALSE(readRunCost((base / "none").string()).finished); // no record: nothing spent
+}
+
+TEST(RunCost, ARecordWrittenBeforeTheTimeBreakdownReadsWithZeroParts) {
+    const RunCostRecord old =
+        readRunCost(std::string(GRAINLAB_SOURCE_DIR) + "/tests/data/run-before-compression");
+    EXPECT_EQ(old.steps, 2000);
+    EXPECT_GT(old.cpuSeconds, 0);
+    EXPECT_EQ(old.times.stepping + old.times.records + old.times.checkpoints + old.times.events,
+              0.0);
 }
 
 } // namespace

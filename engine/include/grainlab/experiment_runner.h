@@ -61,6 +61,15 @@ struct ResumePoint {
 /// most (a small assembly gains nothing from a second thread). Results are the same bits for any.
 int engineThreads(const ExperimentConfig& config);
 
+/// Where a runner object's wall time has gone [s]: stepping (Simulation::advance), records (the
+/// measures of each record, void cells included, and handing the row to the output), checkpoints
+/// (copying the state, its contact network and void cells, and writing them), and the rest of
+/// the stages' events (equilibrium checks, servo changes, stage starts and ends). Measured, not
+/// estimated: what a run spends beyond stepping is records + checkpoints + events.
+struct RunnerTimes {
+    double stepping = 0, records = 0, checkpoints = 0, events = 0;
+};
+
 class ExperimentRunner {
 public:
     explicit ExperimentRunner(ExperimentConfig config, RunOutput* output = nullptr);
@@ -75,6 +84,8 @@ public:
     bool finished() const;
     /// Time steps this runner object has advanced (a resumed run counts from its resumption).
     std::int64_t stepsTaken() const;
+    /// Where this runner object's wall time has gone (a resumed run counts from its resumption).
+    RunnerTimes times() const;
     RunProgress progress() const;
     const ExperimentConfig& config() const;
     /// The simulation of the current stage (valid until the next advance()).

@@ -105,6 +105,16 @@ std::int32_t slidingContactCount(const ContactNetwork& network);
 /// I_uf = sqrt(sum_p |F_net|^2 / N_p) / sqrt(sum_c |f_c|^2 / N_c) * 100 [%]; 0 without
 /// contact force.
 double unbalancedForceIndex(const ContactNetwork& network);
+/// |f_c|^2 = f_n^2 + f_t^2 of one contact [N^2].
+inline double contactForceSquared(double normalForce, double tangentialForce) {
+    return normalForce * normalForce + tangentialForce * tangentialForce;
+}
+/// I_uf from its parts: `contactSum`, contactForceSquared summed in contact order over
+/// `contacts` touching contacts, and the net force on every grain (Simulation's
+/// unbalancedForceIndex(), which needs no contact geometry, gives the same bits as the network's).
+double unbalancedForceIndex(double contactSum, std::size_t contacts,
+                            const std::vector<double>& netForce1,
+                            const std::vector<double>& netForce2);
 /// e = (A_cell - sum A_grains) / sum A_grains [-]; 0 without grains.
 double voidRatio(const ContactNetwork& network);
 /// Mean of the equivalent diameters sqrt(4 A / pi) [m]; 0 without grains.

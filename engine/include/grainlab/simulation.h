@@ -71,6 +71,9 @@ public:
     ContactNetwork contactNetwork() const;
     Energies energies() const;
     std::size_t contactCount() const;
+    /// The unbalanced force index I_uf [%] (measures.h), the same bits as
+    /// unbalancedForceIndex(contactNetwork()) without building the network's geometry.
+    double unbalancedForceIndex() const;
     std::int64_t neighbourRebuilds() const { return rebuilds_; }
     /// Grain masses [kg].
     const std::vector<double>& grainMass() const { return mass_; }
