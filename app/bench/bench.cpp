@@ -22,6 +22,7 @@
 #include "common/progress_bar.h"
 #include "grainlab/assembly.h"
 #include "grainlab/measures.h"
+#include "grainlab/periodic_cell.h"
 #include "grainlab/random.h"
 #include "grainlab/scenes/compacted_scene.h"
 #include "grainlab/simulation.h"
@@ -221,6 +222,35 @@ std::vector<std::size_t> randomOrder(std::size_t n, std::uint64_t seed) {
     return order;
 }
 
+/// The grains in Morton (Z) order of their positions in the cell: the order a spatial sort at
+/// neighbour rebuilds would keep (LAMMPS's atom_modify sort bins by space likewise).
+std::vector<std::size_t> mortonOrder(const SimulationState& s) {
+    const auto spread = [](std::uint32_t v) { // 16 bits to the even bits of 32
+        std::uint64_t x = v & 0xffffu;
+        x = (x | (x << 8)) & 0x00ff00ffu;
+        x = (x | (x << 4)) & 0x0f0f0f0fu;
+        x = (x | (x << 2)) & 0x33333333u;
+        x = (x | (x << 1)) & 0x55555555u;
+        return x;
+    };
+    const std::size_t n = s.grains.size();
+    std::vector<std::uint64_t> key(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto f = toFractional(s.cell, s.grains.x1[i], s.grains.x2[i]);
+        const auto bin = [](double v) {
+            return static_cast<std::uint32_t>(std::clamp(v - std::floor(v), 0.0, 1.0) * 65535.0);
+        };
+        key[i] = spread(bin(f[0])) | (spread(bin(f[1])) << 1);
+    }
+    std::vector<std::size_t> order(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        order[k] = k;
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+    return order;
+}
+
 /// How far apart in memory a neighbour pair's grains are: the median of |i - j| over the
 /// neighbour list a simulation of `s` builds.
 double medianIndexGap(const SimulationState& s) {
@@ -238,9 +268,9 @@ int runScaling(const BenchOptions& o, const std::vector<std::pair<std::string, d
     // One compacted base of 1000 grains per shape, tiled 1x1 to 32x16: the same dense structure
     // and contacts per grain at every size, without compacting 512k grains. Every size runs the
     // same steps from its start (the same strain path, so the same contacts per grain), repeated
-    // until it has done the same grain-steps as the others. Two orders of the grains: as tiled
-    // (tile by tile, each tile in its generated grid's order: neighbours close in memory), and
-    // shuffled (what losing that order costs).
+    // until it has done the same grain-steps as the others. Three orders of the grains: as tiled
+    // (tile by tile, each tile in its generated grid's order), sorted along a Morton curve (what
+    // a spatial sort gives), and shuffled (what losing the order costs).
     const std::vector<std::pair<int, int>> tilings = {{1, 1}, {4, 2}, {8, 4}, {16, 8}, {32, 16}};
     const std::size_t largest = 1000 * 32 * 16;
     const std::int64_t steps =
@@ -250,12 +280,14 @@ int runScaling(const BenchOptions& o, const std::vector<std::pair<std::string, d
                "contacts/grain", "bytes/grain", "median|i-j|");
     for (const auto& [name, aspect] : shapes) {
         const SimulationState base = compactedAssembly(1000, aspect, o.seed);
-        for (const bool shuffle : {false, true}) {
+        for (const std::string order : {"tiled", "morton", "shuffled"}) {
             std::map<int, double> at8000; // ns per grain-step at 8000 grains, by threads
             for (const auto& [t1, t2] : tilings) {
                 SimulationState dense = tiled(base, t1, t2);
                 const std::size_t n = dense.grains.size();
-                if (shuffle) {
+                if (order == "morton") {
+                    dense = renumbered(dense, mortonOrder(dense));
+                } else if (order == "shuffled") {
                     dense = renumbered(dense, randomOrder(n, o.seed));
                 }
                 const double gap = medianIndexGap(dense);
@@ -266,8 +298,7 @@ int runScaling(const BenchOptions& o, const std::vector<std::pair<std::string, d
                     RunResult last;
                     for (int round = 0; round < o.rounds; ++round) {
                         fmt::print(stderr, "scaling: {} {} {} grains, {} thread(s), round {}/{}\n",
-                                   name, shuffle ? "shuffled" : "tiled", n, threads, round + 1,
-                                   o.rounds);
+                                   name, order, n, threads, round + 1, o.rounds);
                         double seconds = 0;
                         for (std::int64_t r = 0; r < runs; ++r) {
                             last = timeEngine(dense, threads, steps, false);
@@ -283,9 +314,8 @@ int runScaling(const BenchOptions& o, const std::vector<std::pair<std::string, d
                         at8000.count(threads) ? fmt::format("{:.2f}", ns / at8000[threads]) : "";
                     fmt::print("{:<6} {:<8} {:>7} {:>8} {:>12} {:>16.2f} {:>9} {:>14.3f} {:>14.0f} "
                                "{:>12.0f}\n",
-                               name, shuffle ? "shuffled" : "tiled", n, threads,
-                               fmt::format("{} x {}", steps, runs), ns, ratio,
-                               last.contactsPerGrain, last.bytesPerGrain, gap);
+                               name, order, n, threads, fmt::format("{} x {}", steps, runs), ns,
+                               ratio, last.contactsPerGrain, last.bytesPerGrain, gap);
                     std::fflush(stdout);
                 }
             }
@@ -322,7 +352,7 @@ void addBenchOptions(CLI::App& command, BenchOptions& o) {
     command.add_option("--lammps", o.lammpsExecutable, "LAMMPS executable")->capture_default_str();
     command.add_flag("--scaling", o.scaling,
                      "cost per grain-step at 1k to 512k grains (tiled assemblies, as tiled and "
-                     "shuffled)");
+                     "Morton-sorted and shuffled)");
     command.add_flag("--gui", o.gui,
                      "the live window instead: engine steps/s headless and in the window "
                      "(--gui-steps of --experiment's first shear, --rounds), and the scene's "

@@ -105,6 +105,20 @@ std::string experimentRemedy(const std::exception& e) {
     return {};
 }
 
+/// Where this process's time went (the run's sums over its processes are in cost.json).
+void printTimes(const RunnerTimes& t) {
+    const double total = t.stepping + t.records + t.checkpoints + t.events;
+    if (!(total > 0.0)) {
+        return;
+    }
+    const auto part = [&](double seconds) {
+        return fmt::format("{:.1f} s ({:.1f} %)", seconds, 100.0 * seconds / total);
+    };
+    fmt::print("grainlab run: time in this process: stepping {}, records {}, checkpoints {}, "
+               "other stage events {}\n",
+               part(t.stepping), part(t.records), part(t.checkpoints), part(t.events));
+}
+
 } // namespace
 
 int runExperimentCommand(const RunOptions& options) {
@@ -208,6 +222,9 @@ int runExperimentCommand(const RunOptions& options) {
                 bar.finish();
             }
             fmt::print("grainlab run: finished; outputs in {}\n", folder);
+            if (!options.quiet) {
+                printTimes(runner->times());
+            }
         }
     } catch (const std::exception& e) {
         bar.finish();

@@ -191,6 +191,8 @@ VoidCellSet computeVoidCells(const ContactNetwork& network,
         set.graphGrains += he.rotationStart[g + 1] > he.rotationStart[g] ? 1 : 0;
     }
 
+    // Faces of a cellular embedding on the torus: F = E - V (Euler), the cells at most that.
+    set.cells.reserve(std::size_t(std::max(0, set.graphContacts - set.graphGrains)));
     std::vector<std::uint8_t> visited(halfEdgeCount, 0);
     for (std::int32_t start = 0; start < halfEdgeCount; ++start) {
         if (visited[start]) {
