@@ -43,9 +43,7 @@ struct SupportOverlap {
 } // namespace
 
 GeometryMapSpec readGeometryPreset(const std::string& path) {
-    GeometryMapSpec spec = parseGeometryPreset(readInputFile(path, "stability preset"), path);
-    spec.sourcePath = path;
-    return spec;
+    return map_preset::readPresetFile(path, parseGeometryPreset);
 }
 
 GeometryMapSpec parseGeometryPreset(const std::string& text, const std::string& file) {

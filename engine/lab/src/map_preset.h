@@ -20,6 +20,15 @@ std::string shortNumber(double v);
 /// A CSV number: round-trip precision; empty for a non-finite value (never "nan" in a table).
 std::string csvNumber(double v);
 
+/// Reads the preset file at `path` with `parse` (the map's own reader) and records the path.
+template <class Spec>
+Spec readPresetFile(const std::string& path,
+                    Spec (*parse)(const std::string& text, const std::string& file)) {
+    Spec spec = parse(readInputFile(path, "stability preset"), path);
+    spec.sourcePath = path;
+    return spec;
+}
+
 /// Reads the preset's "name" (no spaces or slashes: it names a folder) and checks its free
 /// "description"; returns the name, `fallback` when absent.
 std::string presetName(const JsonSection& top, const std::string& fallback);

@@ -36,9 +36,7 @@ std::vector<std::string> cellFields(const ServoCell& c, const ServoMapSpec& spec
 } // namespace
 
 ServoMapSpec readServoPreset(const std::string& path) {
-    ServoMapSpec spec = parseServoPreset(readInputFile(path, "stability preset"), path);
-    spec.sourcePath = path;
-    return spec;
+    return map_preset::readPresetFile(path, parseServoPreset);
 }
 
 ServoMapSpec parseServoPreset(const std::string& text, const std::string& file) {

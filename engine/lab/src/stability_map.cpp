@@ -115,9 +115,7 @@ std::string stabilityPresetKind(const std::string& text, const std::string& file
 }
 
 StabilityMapSpec readStabilityPreset(const std::string& path) {
-    StabilityMapSpec spec = parseStabilityPreset(readInputFile(path, "stability preset"), path);
-    spec.sourcePath = path;
-    return spec;
+    return map_preset::readPresetFile(path, parseStabilityPreset);
 }
 
 StabilityMapSpec parseStabilityPreset(const std::string& text, const std::string& file) {
