@@ -8,6 +8,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include "grainlab/enum_names.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/measures.h"
 #include "python/module.h"
@@ -183,14 +184,8 @@ py::dict voidCellsDict(const VoidCellSet& set) {
 AxisControl axisControl(const std::string& mode, double rate, double stress, double slope,
                         double origin, double area, double length) {
     AxisControl c;
-    if (mode == "strain") {
-        c.mode = AxisMode::Strain;
-    } else if (mode == "stress") {
-        c.mode = AxisMode::Stress;
-    } else if (mode == "constant_area") {
-        c.mode = AxisMode::ConstantArea;
-    } else if (mode == "stress_path") {
-        c.mode = AxisMode::StressPath;
+    if (const auto m = enumFromName(kAxisModeNames, mode)) {
+        c.mode = *m;
     } else {
         throw std::invalid_argument(fmt::format(
             "mode '{}': must be 'strain', 'stress', 'constant_area' or 'stress_path'", mode));
@@ -205,17 +200,7 @@ AxisControl axisControl(const std::string& mode, double rate, double stress, dou
 }
 
 const char* modeName(AxisMode m) {
-    switch (m) {
-    case AxisMode::Strain:
-        return "strain";
-    case AxisMode::Stress:
-        return "stress";
-    case AxisMode::ConstantArea:
-        return "constant_area";
-    case AxisMode::StressPath:
-        return "stress_path";
-    }
-    return "?";
+    return enumName(kAxisModeNames, m, "?");
 }
 
 } // namespace

@@ -10,6 +10,7 @@
 
 #include "grainlab/contact_geometry.h"
 #include "grainlab/csv_series.h"
+#include "grainlab/enum_names.h"
 #include "grainlab/random.h"
 #include "grainlab/simulation.h"
 #include "grainlab/strict_json.h"
@@ -170,15 +171,11 @@ KernelContact engineContact(const OvalShape& A, double thetaA, const OvalShape& 
 }
 
 std::string geometryKernelName(GeometryKernel kernel) {
-    switch (kernel) {
-    case GeometryKernel::Engine:
-        return "engine";
-    case GeometryKernel::SixteenPair:
-        return "sixteen_pair";
-    case GeometryKernel::FourPair:
-        return "four_pair";
-    }
-    return "engine";
+    static constexpr EnumName<GeometryKernel> kNames[] = {
+        {GeometryKernel::Engine, "engine"},
+        {GeometryKernel::SixteenPair, "sixteen_pair"},
+        {GeometryKernel::FourPair, "four_pair"}};
+    return enumName(kNames, kernel, "engine");
 }
 
 std::vector<GeometryLevel> measureGeometryMap(const GeometryMapSpec& spec,
