@@ -53,6 +53,14 @@ CLI::App* addRunCommand(CLI::App& app, RunOptions& run) {
     return runCommand;
 }
 
+/// The process pool's options of `study` and `stability`: how many processes at once (--jobs),
+/// or the job list to write instead (--emit).
+void addPoolOptions(CLI::App& command, int& jobs, const std::string& jobsHelp, std::string& emit,
+                    const std::string& emitHelp) {
+    command.add_option("--jobs", jobs, jobsHelp)->check(CLI::Range(1, 1024));
+    command.add_option("--emit", emit, emitHelp)->check(CLI::IsMember({"slurm", "parallel"}));
+}
+
 /// `study` and `study collect`.
 struct StudyCommands {
     CLI::App* study;
@@ -65,13 +73,10 @@ void addStudyCommands(CLI::App& app, StudyOptions& study, StudyCommands& c) {
                  "cost and recommend the cheapest valid setting");
     c.study->add_option("study", study.studyFile, "study file (.json)");
     c.study->add_option("--out", study.out, "study folder (runs, study.csv, summary.csv)");
-    c.study->add_option("--jobs", study.jobs, "runs at once (default: as the processors allow)")
-        ->check(CLI::Range(1, 1024));
-    c.study
-        ->add_option("--emit", study.emit,
-                     "write the runs as a Slurm job array (slurm) or a GNU parallel job "
-                     "list (parallel) instead of running them")
-        ->check(CLI::IsMember({"slurm", "parallel"}));
+    addPoolOptions(*c.study, study.jobs, "runs at once (default: as the processors allow)",
+                   study.emit,
+                   "write the runs as a Slurm job array (slurm) or a GNU parallel job "
+                   "list (parallel) instead of running them");
     c.study->add_flag("--quiet", study.quiet, "no progress bar");
     c.collect = c.study->add_subcommand(
         "collect", "summarise a study folder whose runs were run elsewhere (Slurm, GNU parallel)");
@@ -128,13 +133,10 @@ void addStabilityCommands(CLI::App& app, StabilityOptions& stability, StabilityC
                       "a preset of resources/stability (tiny, full, servo-tiny, "
                       "servo-full, geometry-tiny, geometry-full)");
     c.map->add_option("--out", stability.out, "map folder (cells/, limits.csv)");
-    c.map->add_option("--jobs", stability.jobs, "map points at once (default: the processors)")
-        ->check(CLI::Range(1, 1024));
-    c.map
-        ->add_option("--emit", stability.emit,
-                     "write the map points as a Slurm job array (slurm) or a GNU parallel job list "
-                     "(parallel) instead of running them")
-        ->check(CLI::IsMember({"slurm", "parallel"}));
+    addPoolOptions(*c.map, stability.jobs, "map points at once (default: the processors)",
+                   stability.emit,
+                   "write the map points as a Slurm job array (slurm) or a GNU parallel job list "
+                   "(parallel) instead of running them");
     c.map->add_flag("--quiet", stability.quiet, "no progress bar");
     c.point = c.map->add_subcommand("cell", "measure one map point of a map folder");
     c.point->add_option("folder", c.folder, "the map folder")->required();

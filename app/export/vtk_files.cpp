@@ -99,37 +99,37 @@ std::size_t VtkArray::values() const {
     }
 }
 
-VtkArray float64Array(std::string name, std::vector<double> values, int components) {
+namespace {
+
+/// An array of `type`, its values in the member `field` (the one that type reads).
+template <class T>
+VtkArray typedArray(std::string name, VtkArray::Type type, std::vector<T> VtkArray::*field,
+                    std::vector<T> values, int components = 1) {
     VtkArray a;
     a.name = std::move(name);
-    a.type = VtkArray::Type::Float64;
+    a.type = type;
     a.components = components;
-    a.float64 = std::move(values);
+    a.*field = std::move(values);
     return a;
+}
+
+} // namespace
+
+VtkArray float64Array(std::string name, std::vector<double> values, int components) {
+    return typedArray(std::move(name), VtkArray::Type::Float64, &VtkArray::float64,
+                      std::move(values), components);
 }
 
 VtkArray int64Array(std::string name, std::vector<std::int64_t> values) {
-    VtkArray a;
-    a.name = std::move(name);
-    a.type = VtkArray::Type::Int64;
-    a.int64 = std::move(values);
-    return a;
+    return typedArray(std::move(name), VtkArray::Type::Int64, &VtkArray::int64, std::move(values));
 }
 
 VtkArray int32Array(std::string name, std::vector<std::int32_t> values) {
-    VtkArray a;
-    a.name = std::move(name);
-    a.type = VtkArray::Type::Int32;
-    a.int32 = std::move(values);
-    return a;
+    return typedArray(std::move(name), VtkArray::Type::Int32, &VtkArray::int32, std::move(values));
 }
 
 VtkArray uint8Array(std::string name, std::vector<std::uint8_t> values) {
-    VtkArray a;
-    a.name = std::move(name);
-    a.type = VtkArray::Type::UInt8;
-    a.uint8 = std::move(values);
-    return a;
+    return typedArray(std::move(name), VtkArray::Type::UInt8, &VtkArray::uint8, std::move(values));
 }
 
 void VtkPolyData::addCell(const std::vector<double>& x1, const std::vector<double>& x2) {

@@ -8,6 +8,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include "grainlab/enum_names.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/measures.h"
 #include "python/module.h"
@@ -183,14 +184,8 @@ py::dict voidCellsDict(const VoidCellSet& set) {
 AxisControl axisControl(const std::string& mode, double rate, double stress, double slope,
                         double origin, double area, double length) {
     AxisControl c;
-    if (mode == "strain") {
-        c.mode = AxisMode::Strain;
-    } else if (mode == "stress") {
-        c.mode = AxisMode::Stress;
-    } else if (mode == "constant_area") {
-        c.mode = AxisMode::ConstantArea;
-    } else if (mode == "stress_path") {
-        c.mode = AxisMode::StressPath;
+    if (const auto m = enumFromName(kAxisModeNames, mode)) {
+        c.mode = *m;
     } else {
         throw std::invalid_argument(fmt::format(
             "mode '{}': must be 'strain', 'stress', 'constant_area' or 'stress_path'", mode));
@@ -205,66 +200,38 @@ AxisControl axisControl(const std::string& mode, double rate, double stress, dou
 }
 
 const char* modeName(AxisMode m) {
-    switch (m) {
-    case AxisMode::Strain:
-        return "strain";
-    case AxisMode::Stress:
-        return "stress";
-    case AxisMode::ConstantArea:
-        return "constant_area";
-    case AxisMode::StressPath:
-        return "stress_path";
-    }
-    return "?";
+    return enumName(kAxisModeNames, m, "?");
 }
 
 } // namespace
 
 py::dict contactsDict(const ContactNetwork& net) {
     const std::size_t n = net.contacts.size();
-    std::vector<std::int32_t> first(n), second(n), shift1(n), shift2(n);
-    std::vector<double> n1(n), n2(n), p1(n), p2(n), b1(n), b2(n), overlap(n), fn(n), ft(n), f1(n),
-        f2(n);
-    std::vector<std::uint8_t> sliding(n);
+    const ContactColumns c = contactColumns(net);
+    std::vector<double> f1(n), f2(n);
     for (std::size_t k = 0; k < n; ++k) {
-        const ContactRecord& c = net.contacts[k];
-        first[k] = c.first;
-        second[k] = c.second;
-        shift1[k] = c.shift1;
-        shift2[k] = c.shift2;
-        n1[k] = c.normal1;
-        n2[k] = c.normal2;
-        p1[k] = net.x1[c.first] + c.point1;
-        p2[k] = net.x2[c.first] + c.point2;
-        b1[k] = c.branch1;
-        b2[k] = c.branch2;
-        overlap[k] = c.overlap;
-        fn[k] = c.normalForce;
-        ft[k] = c.tangentialForce;
-        const auto f = c.force();
+        const auto f = net.contacts[k].force();
         f1[k] = f[0];
         f2[k] = f[1];
-        sliding[k] = c.sliding ? 1 : 0;
     }
     py::dict d;
-    d["first"] = copyOf(first);
-    d["second"] = copyOf(second);
-    std::vector<double> s1(shift1.begin(), shift1.end()), s2(shift2.begin(), shift2.end());
+    d["first"] = copyOf(c.first);
+    d["second"] = copyOf(c.second);
     py::array_t<std::int32_t> shift({static_cast<py::ssize_t>(n), py::ssize_t(2)});
     auto w = shift.mutable_unchecked<2>();
     for (std::size_t k = 0; k < n; ++k) {
-        w(k, 0) = shift1[k];
-        w(k, 1) = shift2[k];
+        w(k, 0) = c.shift1[k];
+        w(k, 1) = c.shift2[k];
     }
     d["shift"] = shift;
-    d["normal"] = pairs(n1, n2);
-    d["point"] = pairs(p1, p2);
-    d["branch"] = pairs(b1, b2);
-    d["overlap"] = copyOf(overlap);
-    d["normal_force"] = copyOf(fn);
-    d["tangential_force"] = copyOf(ft);
+    d["normal"] = pairs(c.normal1, c.normal2);
+    d["point"] = pairs(c.point1, c.point2);
+    d["branch"] = pairs(c.branch1, c.branch2);
+    d["overlap"] = copyOf(c.overlap);
+    d["normal_force"] = copyOf(c.normalForce);
+    d["tangential_force"] = copyOf(c.tangentialForce);
     d["force"] = pairs(f1, f2);
-    d["sliding"] = boolsOf(sliding);
+    d["sliding"] = boolsOf(c.sliding);
     return d;
 }
 

@@ -64,15 +64,25 @@ std::vector<std::string> cellArguments(const std::string& grainlab, const fs::pa
     return {grainlab, "stability", "cell", dir.string(), "--cell", id, "--quiet"};
 }
 
-std::size_t collectTimeStep(const fs::path& dir, const StabilityMapSpec& spec, bool quiet,
-                            const StabilityFigureWriter& figures) {
-    std::vector<StabilityCellResult> results;
-    for (const StabilityCell& cell : stabilityCells(spec)) {
+/// The results of the cells done in the map folder `dir` (each cells/<id>.json there), in the
+/// order of `cells`, read with `parse`.
+template <class Cell, class Result>
+std::vector<Result> cellResultsDone(const fs::path& dir, const std::vector<Cell>& cells,
+                                    Result (*parse)(const std::string&, const std::string&)) {
+    std::vector<Result> results;
+    for (const Cell& cell : cells) {
         const fs::path file = dir / "cells" / (cell.id + ".json");
         if (fs::exists(file)) {
-            results.push_back(parseCellResult(readWholeFile(file.string()), file.string()));
+            results.push_back(parse(readWholeFile(file.string()), file.string()));
         }
     }
+    return results;
+}
+
+std::size_t collectTimeStep(const fs::path& dir, const StabilityMapSpec& spec, bool quiet,
+                            const StabilityFigureWriter& figures) {
+    const std::vector<StabilityCellResult> results =
+        cellResultsDone(dir, stabilityCells(spec), parseCellResult);
     writeFileAtomically((dir / "limits.csv").string(), limitsCsv(results));
     writeFileAtomically((dir / "accuracy.csv").string(), accuracyCsv(results));
     if (figures && !results.empty()) {
@@ -90,13 +100,8 @@ std::size_t collectTimeStep(const fs::path& dir, const StabilityMapSpec& spec, b
 
 std::size_t collectServo(const fs::path& dir, const ServoMapSpec& spec, bool quiet,
                          const ServoFigureWriter& figures) {
-    std::vector<ServoCellResult> results;
-    for (const ServoCell& cell : servoCells(spec)) {
-        const fs::path file = dir / "cells" / (cell.id + ".json");
-        if (fs::exists(file)) {
-            results.push_back(parseServoCellResult(readWholeFile(file.string()), file.string()));
-        }
-    }
+    const std::vector<ServoCellResult> results =
+        cellResultsDone(dir, servoCells(spec), parseServoCellResult);
     writeFileAtomically((dir / "servo_limits.csv").string(), servoLimitsCsv(spec, results));
     writeFileAtomically((dir / "servo_runs.csv").string(), servoRunsCsv(results));
     if (figures && !results.empty()) {
@@ -120,15 +125,23 @@ struct CellMap {
     std::function<std::size_t(const fs::path& dir, bool quiet)> collect;
 };
 
+/// The ids of a map's cells, in the map's order.
+template <class Cell>
+std::vector<std::string> cellIds(const std::vector<Cell>& cells) {
+    std::vector<std::string> ids;
+    for (const Cell& c : cells) {
+        ids.push_back(c.id);
+    }
+    return ids;
+}
+
 CellMap cellMapOf(const fs::path& dir, const std::string& kind, const std::string& path,
                   const StabilityFigureWriter& figures, const ServoFigureWriter& servoFigures) {
     CellMap map;
     if (kind == "servo") {
         const ServoMapSpec spec = readServoPreset(path);
         map.name = spec.name;
-        for (const ServoCell& c : servoCells(spec)) {
-            map.ids.push_back(c.id);
-        }
+        map.ids = cellIds(servoCells(spec));
         map.collect = [spec, servoFigures](const fs::path& d, bool quiet) {
             return collectServo(d, spec, quiet, servoFigures);
         };
@@ -142,9 +155,7 @@ CellMap cellMapOf(const fs::path& dir, const std::string& kind, const std::strin
     }
     const StabilityMapSpec spec = readStabilityPreset(path);
     map.name = spec.name;
-    for (const StabilityCell& c : stabilityCells(spec)) {
-        map.ids.push_back(c.id);
-    }
+    map.ids = cellIds(stabilityCells(spec));
     map.collect = [spec, figures](const fs::path& d, bool quiet) {
         return collectTimeStep(d, spec, quiet, figures);
     };

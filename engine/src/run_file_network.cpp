@@ -22,47 +22,30 @@ void writeContacts(H5::Group& checkpoint, const ContactNetwork& network) {
     }
     H5::Group g = checkpoint.createGroup("contacts");
     const std::size_t n = network.contacts.size();
-    std::vector<std::int32_t> first(n), second(n), shift1(n), shift2(n);
-    std::vector<double> normal1(n), normal2(n), point1(n), point2(n), branch1(n), branch2(n);
-    std::vector<double> overlap(n), normalForce(n), tangentialForce(n);
-    std::vector<std::uint8_t> sliding(n), strong(n);
+    const ContactColumns c = contactColumns(network);
     // The engine's split (StrongForceThreshold::RmsForce, the measures' default): strong when
     // |f| = sqrt(f_n^2 + f_t^2) exceeds the threshold.
     const double threshold = strongForceThreshold(network, StrongForceThreshold::RmsForce);
-    for (std::size_t c = 0; c < n; ++c) {
-        const ContactRecord& r = network.contacts[c];
-        first[c] = r.first;
-        second[c] = r.second;
-        shift1[c] = r.shift1;
-        shift2[c] = r.shift2;
-        normal1[c] = r.normal1;
-        normal2[c] = r.normal2;
-        point1[c] = network.x1[r.first] + r.point1;
-        point2[c] = network.x2[r.first] + r.point2;
-        branch1[c] = r.branch1;
-        branch2[c] = r.branch2;
-        overlap[c] = r.overlap;
-        normalForce[c] = r.normalForce;
-        tangentialForce[c] = r.tangentialForce;
-        sliding[c] = r.sliding ? 1 : 0;
-        strong[c] = std::hypot(r.normalForce, r.tangentialForce) > threshold ? 1 : 0;
+    std::vector<std::uint8_t> strong(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        strong[k] = std::hypot(c.normalForce[k], c.tangentialForce[k]) > threshold ? 1 : 0;
     }
     writeAttribute(g, "count", std::int64_t(n));
     writeAttribute(g, "strong_threshold", threshold);
-    writeArray(g, "first", first, "-");
-    writeArray(g, "second", second, "-");
-    writeArray(g, "shift1", shift1, "-");
-    writeArray(g, "shift2", shift2, "-");
-    writeArray(g, "normal1", normal1, "-");
-    writeArray(g, "normal2", normal2, "-");
-    writeArray(g, "point1", point1, "m");
-    writeArray(g, "point2", point2, "m");
-    writeArray(g, "branch1", branch1, "m");
-    writeArray(g, "branch2", branch2, "m");
-    writeArray(g, "overlap", overlap, "m");
-    writeArray(g, "normal_force", normalForce, "N");
-    writeArray(g, "tangential_force", tangentialForce, "N");
-    writeArray(g, "sliding", sliding, "-");
+    writeArray(g, "first", c.first, "-");
+    writeArray(g, "second", c.second, "-");
+    writeArray(g, "shift1", c.shift1, "-");
+    writeArray(g, "shift2", c.shift2, "-");
+    writeArray(g, "normal1", c.normal1, "-");
+    writeArray(g, "normal2", c.normal2, "-");
+    writeArray(g, "point1", c.point1, "m");
+    writeArray(g, "point2", c.point2, "m");
+    writeArray(g, "branch1", c.branch1, "m");
+    writeArray(g, "branch2", c.branch2, "m");
+    writeArray(g, "overlap", c.overlap, "m");
+    writeArray(g, "normal_force", c.normalForce, "N");
+    writeArray(g, "tangential_force", c.tangentialForce, "N");
+    writeArray(g, "sliding", c.sliding, "-");
     writeArray(g, "strong", strong, "-");
     writeArray(g, "load_bearing", loadBearingGraph(network).contactInGraph, "-");
     writeArray(g, "centre1", network.x1, "m");

@@ -4,61 +4,36 @@
 #include <string>
 #include <vector>
 
+#include "grainlab/enum_names.h"
 #include "run_file_io.h"
 
 namespace grainlab::hdf5io {
 
 namespace {
 
+/// The damping kinds as the run file names them.
+constexpr EnumName<DampingKind> kDampingNames[] = {{DampingKind::None, "none"},
+                                                   {DampingKind::CundallLocal, "cundall_local"},
+                                                   {DampingKind::GlobalViscous, "global_viscous"}};
+
 const char* dampingName(DampingKind kind) {
-    switch (kind) {
-    case DampingKind::None:
-        return "none";
-    case DampingKind::CundallLocal:
-        return "cundall_local";
-    default:
-        return "global_viscous";
-    }
+    return enumName(kDampingNames, kind, "global_viscous");
 }
 
 DampingKind dampingFromName(const std::string& name) {
-    if (name == "none") {
-        return DampingKind::None;
-    }
-    if (name == "cundall_local") {
-        return DampingKind::CundallLocal;
-    }
-    if (name == "global_viscous") {
-        return DampingKind::GlobalViscous;
+    if (const auto kind = enumFromName(kDampingNames, name)) {
+        return *kind;
     }
     throw std::runtime_error(fmt::format("unknown damping_kind \"{}\"", name));
 }
 
 const char* axisModeName(AxisMode mode) {
-    switch (mode) {
-    case AxisMode::Stress:
-        return "stress";
-    case AxisMode::ConstantArea:
-        return "constant_area";
-    case AxisMode::StressPath:
-        return "stress_path";
-    default:
-        return "strain";
-    }
+    return enumName(kAxisModeNames, mode, "strain");
 }
 
 AxisMode axisFromName(const std::string& name) {
-    if (name == "strain") {
-        return AxisMode::Strain;
-    }
-    if (name == "stress") {
-        return AxisMode::Stress;
-    }
-    if (name == "constant_area") {
-        return AxisMode::ConstantArea;
-    }
-    if (name == "stress_path") {
-        return AxisMode::StressPath;
+    if (const auto mode = enumFromName(kAxisModeNames, name)) {
+        return *mode;
     }
     throw std::runtime_error(fmt::format("unknown axis mode \"{}\"", name));
 }

@@ -1,7 +1,10 @@
 #pragma once
-// Files and folders for the command-line tests: a file's whole text and a fresh folder per test
-// process (ctest runs the tests side by side).
+// Files, folders and commands for the command-line tests: a file's whole text, a fresh folder per
+// test process (ctest runs the tests side by side), and grainlab run as a command or a child.
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <cstdio>
 
 #include <filesystem>
 #include <fstream>
@@ -30,6 +33,30 @@ inline std::filesystem::path freshFolder(const std::string& kind, const std::str
 }
 
 #ifdef GRAINLAB_EXE
+/// How a grainlab command ended and what it said.
+struct CommandOutput {
+    int status = -1;    ///< exit status, or -1 when it did not exit
+    std::string output; ///< stdout and stderr
+};
+
+/// Runs `environment grainlab arguments` through the shell and waits for it.
+inline CommandOutput grainlabOutput(const std::string& arguments,
+                                    const std::string& environment = {}) {
+    const std::string command = fmt::format("{} {} {} 2>&1", environment, GRAINLAB_EXE, arguments);
+    CommandOutput out;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) {
+        return out;
+    }
+    char buffer[1024];
+    while (fgets(buffer, sizeof buffer, pipe)) {
+        out.output += buffer;
+    }
+    const int status = pclose(pipe);
+    out.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return out;
+}
+
 /// In a forked child: replaces it by grainlab with `arguments` (exit status 127 if that fails).
 [[noreturn]] inline void execGrainlab(const std::vector<std::string>& arguments) {
     std::vector<char*> argv{const_cast<char*>(GRAINLAB_EXE)};

@@ -30,6 +30,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using test::CommandOutput;
+using test::grainlabOutput;
 using test::readText;
 
 fs::path freshFolder(const std::string& name) {
@@ -50,26 +52,6 @@ fs::path writeTinyExperiment(const fs::path& folder, double targetStrain = 0.002
     const fs::path p = folder / "experiment.json";
     std::ofstream(p) << j.dump(2);
     return p;
-}
-
-struct Result {
-    int status = -1;    ///< exit status, or -1
-    std::string output; ///< stdout and stderr
-};
-
-Result runGrainlab(const std::string& arguments) {
-    Result r;
-    FILE* pipe = popen(fmt::format("{} {} 2>&1", GRAINLAB_EXE, arguments).c_str(), "r");
-    if (!pipe) {
-        return r;
-    }
-    char buffer[512];
-    while (fgets(buffer, sizeof buffer, pipe)) {
-        r.output += buffer;
-    }
-    const int status = pclose(pipe);
-    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
 }
 
 /// `grainlab run experiment --out out --quiet` started as a child process (its output
@@ -113,7 +95,8 @@ TEST(RunFolder, ARefusedExperimentCreatesNoFolder) {
     const fs::path bad = base / "bad.json";
     std::ofstream(bad) << R"({"name": 3})";
     const fs::path out = base / "new";
-    const Result r = runGrainlab(fmt::format("run {} --out {}", bad.string(), out.string()));
+    const CommandOutput r =
+        grainlabOutput(fmt::format("run {} --out {}", bad.string(), out.string()));
     EXPECT_NE(r.status, 0) << r.output;
     EXPECT_NE(r.output.find(bad.string()), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("name"), std::string::npos) << r.output;
@@ -125,8 +108,8 @@ TEST(RunFolder, QuietPrintsOnlyTheLastLine) {
     const fs::path base = freshFolder("quiet");
     const fs::path experiment = writeTinyExperiment(base);
     const fs::path out = base / "out";
-    const Result r =
-        runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()));
+    const CommandOutput r =
+        grainlabOutput(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()));
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_EQ(r.output, fmt::format("grainlab run: finished; outputs in {}\n", out.string()));
     fs::remove_all(base);
@@ -136,12 +119,13 @@ TEST(RunFolder, ResumeOfAFinishedRunChangesNothing) {
     const fs::path base = freshFolder("finished");
     const fs::path experiment = writeTinyExperiment(base);
     const fs::path out = base / "out";
-    ASSERT_EQ(runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()))
-                  .status,
-              0);
+    ASSERT_EQ(
+        grainlabOutput(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()))
+            .status,
+        0);
     const auto before = folderBytes(out);
     const auto checkpoints = listCheckpoints((out / "run.h5").string());
-    const Result r = runGrainlab(fmt::format("run --resume {} --quiet", out.string()));
+    const CommandOutput r = grainlabOutput(fmt::format("run --resume {} --quiet", out.string()));
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("is finished"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(out.string()), std::string::npos) << r.output;
@@ -167,7 +151,7 @@ TEST(RunFolder, ASecondRunIntoALiveFolderIsRefusedAndTouchesNothing) {
          {fmt::format("run {} --out {} --quiet", experiment.string(), out.string()),
           fmt::format("run {} --out {} --force --quiet", experiment.string(), out.string()),
           fmt::format("run --resume {} --quiet", out.string())}) {
-        const Result r = runGrainlab(arguments);
+        const CommandOutput r = grainlabOutput(arguments);
         EXPECT_EQ(r.status, 2) << arguments << "\n" << r.output;
         EXPECT_NE(r.output.find("another run owns it"), std::string::npos) << r.output;
         EXPECT_NE(r.output.find(out.string()), std::string::npos) << r.output;
@@ -183,7 +167,8 @@ TEST(RunFolder, ASecondRunIntoALiveFolderIsRefusedAndTouchesNothing) {
     const auto checkpoints = listCheckpoints((out / "run.h5").string());
     ASSERT_FALSE(checkpoints.empty());
     EXPECT_NE(checkpoints.back().find("interrupted"), std::string::npos);
-    const Result again = runGrainlab(fmt::format("run --resume {} --quiet", out.string()));
+    const CommandOutput again =
+        grainlabOutput(fmt::format("run --resume {} --quiet", out.string()));
     EXPECT_EQ(again.status, 0) << again.output;
     fs::remove_all(base);
 }
@@ -211,7 +196,8 @@ TEST(RunFolder, AStopAsANewRunStartsLeavesNoFolderOrOneThatResumes) {
         ASSERT_TRUE(WIFEXITED(status));
         EXPECT_TRUE(WEXITSTATUS(status) == 130 || WEXITSTATUS(status) == 0)
             << "exit " << WEXITSTATUS(status);
-        const Result again = runGrainlab(fmt::format("run --resume {} --quiet", out.string()));
+        const CommandOutput again =
+            grainlabOutput(fmt::format("run --resume {} --quiet", out.string()));
         EXPECT_EQ(again.status, 0) << again.output;
     }
     fs::remove_all(base);
@@ -224,8 +210,8 @@ TEST(RunFolder, OutOfAnExistingRunIsRefusedWithoutForce) {
     // An interrupted, resumable run.
     ASSERT_TRUE(interruptedRun(experiment, out, 3000));
     const auto before = folderBytes(out);
-    const Result r =
-        runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()));
+    const CommandOutput r =
+        grainlabOutput(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()));
     EXPECT_EQ(r.status, 2) << r.output;
     EXPECT_NE(r.output.find(out.string()), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("grainlab run --resume " + out.string()), std::string::npos)
@@ -244,12 +230,13 @@ TEST(RunFolder, ForceLeavesNoFileOfTheOldRun) {
     const fs::path two = base / "two.json";
     std::ofstream(two) << j.dump(2);
     ASSERT_EQ(
-        runGrainlab(fmt::format("run {} --out {} --quiet", two.string(), out.string())).status, 0);
+        grainlabOutput(fmt::format("run {} --out {} --quiet", two.string(), out.string())).status,
+        0);
     ASSERT_TRUE(fs::exists(out / "p025kPa" / "series.csv"));
     std::ofstream(out / "notes.txt") << "the user's own file";
     const fs::path one = base / "experiment.json"; // 50 kPa only
-    const Result r =
-        runGrainlab(fmt::format("run {} --out {} --force --quiet", one.string(), out.string()));
+    const CommandOutput r =
+        grainlabOutput(fmt::format("run {} --out {} --force --quiet", one.string(), out.string()));
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_FALSE(fs::exists(out / "p025kPa")) << "the old run's series lingers";
     EXPECT_TRUE(fs::exists(out / "p050kPa" / "series.csv"));
@@ -265,9 +252,9 @@ TEST(RunFolder, ThreadsOutsideTheirRangeAreRefused) {
     const fs::path base = freshFolder("threads");
     const fs::path experiment = writeTinyExperiment(base);
     for (const char* threads : {"-1", "0", "2147483647", "1.5"}) {
-        const Result r =
-            runGrainlab(fmt::format("run {} --out {} --threads {} --quiet", experiment.string(),
-                                    (base / "out").string(), threads));
+        const CommandOutput r =
+            grainlabOutput(fmt::format("run {} --out {} --threads {} --quiet", experiment.string(),
+                                       (base / "out").string(), threads));
         EXPECT_NE(r.status, 0) << threads;
         EXPECT_NE(r.output.find("--threads"), std::string::npos) << r.output;
         EXPECT_NE(r.output.find("1 to 1024"), std::string::npos) << r.output;
@@ -281,7 +268,7 @@ TEST(RunFolder, ADamagedRunFileIsRefusedByNameOrResumesToTheSameResult) {
     const fs::path experiment = writeTinyExperiment(base);
     const fs::path whole = base / "whole";
     ASSERT_EQ(
-        runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), whole.string()))
+        grainlabOutput(fmt::format("run {} --out {} --quiet", experiment.string(), whole.string()))
             .status,
         0);
     const fs::path stopped = base / "stopped";
@@ -296,7 +283,8 @@ TEST(RunFolder, ADamagedRunFileIsRefusedByNameOrResumesToTheSameResult) {
         std::string damaged = bytes;
         damaged[offset] = static_cast<char>(damaged[offset] ^ 0x5a);
         std::ofstream(copy / "run.h5", std::ios::binary | std::ios::trunc) << damaged;
-        const Result r = runGrainlab(fmt::format("run --resume {} --quiet", copy.string()));
+        const CommandOutput r =
+            grainlabOutput(fmt::format("run --resume {} --quiet", copy.string()));
         ASSERT_GE(r.status, 0) << "byte " << offset << ": crashed\n" << r.output;
         if (r.status == 0) {
             // Resumed: every series as in the uninterrupted run.
@@ -392,7 +380,8 @@ TEST(RunFolder, AResumedRunEndsWithAFileOtherReadersOpenOrIsRefusedNamingTheDama
         const fs::path copy = base / d.name;
         fs::copy(stopped, copy, fs::copy_options::recursive);
         std::ofstream(copy / "run.h5", std::ios::binary | std::ios::trunc) << d.bytes;
-        const Result r = runGrainlab(fmt::format("run --resume {} --quiet", copy.string()));
+        const CommandOutput r =
+            grainlabOutput(fmt::format("run --resume {} --quiet", copy.string()));
         ASSERT_GE(r.status, 0) << d.name << ": crashed\n" << r.output;
         // Only grainlab's own message: no trace of the HDF5 library's error stack.
         EXPECT_EQ(r.output.find("HDF5-DIAG"), std::string::npos) << d.name << "\n" << r.output;
@@ -426,7 +415,7 @@ TEST(RunFolder, AFullDiskStopsTheRunCleanlyAndItResumesExactly) {
     const fs::path experiment = writeTinyExperiment(base, 0.004);
     const fs::path whole = base / "whole";
     ASSERT_EQ(
-        runGrainlab(fmt::format("run {} --out {} --quiet", experiment.string(), whole.string()))
+        grainlabOutput(fmt::format("run {} --out {} --quiet", experiment.string(), whole.string()))
             .status,
         0);
     const auto size = fs::file_size(whole / "run.h5");
@@ -464,7 +453,7 @@ TEST(RunFolder, AFullDiskStopsTheRunCleanlyAndItResumesExactly) {
     EXPECT_NE(output.find("grainlab run --resume " + out.string()), std::string::npos) << output;
     // Space freed: the run resumes from its last complete checkpoint to the same bits.
     ASSERT_FALSE(listCheckpoints((out / "run.h5").string()).empty());
-    const Result r = runGrainlab(fmt::format("run --resume {} --quiet", out.string()));
+    const CommandOutput r = grainlabOutput(fmt::format("run --resume {} --quiet", out.string()));
     ASSERT_EQ(r.status, 0) << r.output;
     for (const auto& [name, text] : folderBytes(whole)) {
         if (name.ends_with("series.csv")) {

@@ -22,26 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Output {
-    int status = -1;
-    std::string text; ///< stdout and stderr
-};
-
-Output grainlab(const std::string& arguments, const std::string& environment = {}) {
-    const std::string command = fmt::format("{} {} {} 2>&1", environment, GRAINLAB_EXE, arguments);
-    FILE* pipe = popen(command.c_str(), "r");
-    Output out;
-    if (!pipe) {
-        return out;
-    }
-    char buffer[1024];
-    while (fgets(buffer, sizeof buffer, pipe)) {
-        out.text += buffer;
-    }
-    const int status = pclose(pipe);
-    out.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return out;
-}
+using test::CommandOutput;
+using test::grainlabOutput;
 
 std::size_t count(const std::string& text, const std::string& what) {
     std::size_t n = 0;
@@ -73,27 +55,28 @@ TEST(RunWarningsCommand, PrintedOnceAndKeptThroughAKillAndResume) {
     const fs::path experiment = base / "fast.json";
     std::ofstream(experiment) << fastShear().dump(2);
 
-    const Output whole = grainlab(
+    const CommandOutput whole = grainlabOutput(
         fmt::format("run {} --out {} --quiet", experiment.string(), (base / "whole").string()));
-    ASSERT_EQ(whole.status, 0) << whole.text;
+    ASSERT_EQ(whole.status, 0) << whole.output;
     const std::string said = "grainlab run: warning (p050kPa, step ";
-    EXPECT_EQ(count(whole.text, said), 1u) << whole.text;
-    EXPECT_NE(whole.text.find("inertial number"), std::string::npos) << whole.text;
+    EXPECT_EQ(count(whole.output, said), 1u) << whole.output;
+    EXPECT_NE(whole.output.find("inertial number"), std::string::npos) << whole.output;
     const std::vector<RunWarning> expected = readWarnings((base / "whole" / "run.h5").string());
     ASSERT_EQ(expected.size(), 1u);
 
     // Killed in the shear, after the warning (the simulation's step counts the process's steps
     // here: one test, from the generated assembly on; the shear takes some 1500 steps), resumed.
     const fs::path parts = base / "parts";
-    const Output killed =
-        grainlab(fmt::format("run {} --out {} --quiet", experiment.string(), parts.string()),
-                 "GRAINLAB_TEST_STOP_AFTER_STEPS=" + std::to_string(expected[0].step + 700));
+    const CommandOutput killed =
+        grainlabOutput(fmt::format("run {} --out {} --quiet", experiment.string(), parts.string()),
+                       "GRAINLAB_TEST_STOP_AFTER_STEPS=" + std::to_string(expected[0].step + 700));
     EXPECT_NE(killed.status, 0);
-    EXPECT_EQ(count(killed.text, said), 1u) << killed.text;
-    const Output resumed = grainlab(fmt::format("run --resume {} --quiet", parts.string()));
-    ASSERT_EQ(resumed.status, 0) << resumed.text;
+    EXPECT_EQ(count(killed.output, said), 1u) << killed.output;
+    const CommandOutput resumed =
+        grainlabOutput(fmt::format("run --resume {} --quiet", parts.string()));
+    ASSERT_EQ(resumed.status, 0) << resumed.output;
     // A resumed run repeats its earlier warnings on the terminal, and the file holds each once.
-    EXPECT_EQ(count(resumed.text, said), 1u) << resumed.text;
+    EXPECT_EQ(count(resumed.output, said), 1u) << resumed.output;
     EXPECT_EQ(readWarnings((parts / "run.h5").string()), expected);
     fs::remove_all(base);
 }
@@ -106,21 +89,21 @@ TEST(RunWarningsCommand, AFailingRunNamesItsLastGoodCheckpoint) {
     j["record"]["snapshot_step_interval"] = 200;
     const fs::path experiment = base / "fail.json";
     std::ofstream(experiment) << j.dump(2);
-    const Output out =
-        grainlab(fmt::format("run {} --out {}", experiment.string(), (base / "out").string()));
-    EXPECT_EQ(out.status, 1) << out.text;
-    EXPECT_NE(out.text.find("overlap"), std::string::npos) << out.text;
+    const CommandOutput out = grainlabOutput(
+        fmt::format("run {} --out {}", experiment.string(), (base / "out").string()));
+    EXPECT_EQ(out.status, 1) << out.output;
+    EXPECT_NE(out.output.find("overlap"), std::string::npos) << out.output;
     const std::vector<std::string> checkpoints =
         listCheckpoints((base / "out" / "run.h5").string());
     ASSERT_FALSE(checkpoints.empty());
-    EXPECT_NE(out.text.find("keeps its last good checkpoint " + checkpoints.back() + " and"),
+    EXPECT_NE(out.output.find("keeps its last good checkpoint " + checkpoints.back() + " and"),
               std::string::npos)
-        << out.text;
+        << out.output;
     // A stop of the experiment itself: the message says which key to change and to start a
     // new run, never to resume (which would meet the same stop).
-    EXPECT_EQ(out.text.find("--resume"), std::string::npos) << out.text;
-    EXPECT_NE(out.text.find("stability.max_overlap_fraction"), std::string::npos) << out.text;
-    EXPECT_NE(out.text.find("--out NEW_FOLDER"), std::string::npos) << out.text;
+    EXPECT_EQ(out.output.find("--resume"), std::string::npos) << out.output;
+    EXPECT_NE(out.output.find("stability.max_overlap_fraction"), std::string::npos) << out.output;
+    EXPECT_NE(out.output.find("--out NEW_FOLDER"), std::string::npos) << out.output;
     fs::remove_all(base);
 }
 
@@ -130,15 +113,15 @@ TEST(RunWarningsCommand, AStageStepLimitNamesItsKeyAndSuggestsANewRun) {
     j["compaction"]["criterion"]["max_steps"] = 300; // no compaction is calm this soon
     const fs::path experiment = base / "limit.json";
     std::ofstream(experiment) << j.dump(2);
-    const Output out =
-        grainlab(fmt::format("run {} --out {}", experiment.string(), (base / "out").string()));
-    EXPECT_EQ(out.status, 1) << out.text;
-    EXPECT_NE(out.text.find("did not reach equilibrium"), std::string::npos) << out.text;
-    EXPECT_NE(out.text.find("compaction.criterion.max_steps"), std::string::npos) << out.text;
-    EXPECT_NE(out.text.find("grainlab run " + experiment.string() + " --out NEW_FOLDER"),
+    const CommandOutput out = grainlabOutput(
+        fmt::format("run {} --out {}", experiment.string(), (base / "out").string()));
+    EXPECT_EQ(out.status, 1) << out.output;
+    EXPECT_NE(out.output.find("did not reach equilibrium"), std::string::npos) << out.output;
+    EXPECT_NE(out.output.find("compaction.criterion.max_steps"), std::string::npos) << out.output;
+    EXPECT_NE(out.output.find("grainlab run " + experiment.string() + " --out NEW_FOLDER"),
               std::string::npos)
-        << out.text;
-    EXPECT_EQ(out.text.find("--resume"), std::string::npos) << out.text;
+        << out.output;
+    EXPECT_EQ(out.output.find("--resume"), std::string::npos) << out.output;
     fs::remove_all(base);
 }
 

@@ -143,6 +143,17 @@ SeriesTable sampleSeries(const std::string& test, std::size_t rows) {
     return t;
 }
 
+/// `back`, read from a file, is the table `written`: its test, its stages, and every row to the
+/// bit.
+void expectSameSeries(const SeriesTable& back, const SeriesTable& written) {
+    EXPECT_EQ(back.test, written.test);
+    EXPECT_EQ(back.stages, written.stages);
+    ASSERT_EQ(back.rows.size(), written.rows.size());
+    for (std::size_t k = 0; k < written.rows.size(); ++k) {
+        expectSameBits(back.rows[k], written.rows[k], "row " + std::to_string(k));
+    }
+}
+
 TEST(RunFile, StateRoundTripIsBitExact) {
     ScratchDir dir;
     const Simulation sim = squeezedAssembly();
@@ -243,17 +254,12 @@ TEST(RunFile, SeriesAppendIncrementallyAndRoundTrip) {
     }
     EXPECT_EQ(listTests(path), (std::vector<std::string>{"p15kPa", "p100kPa"}));
     const SeriesTable back = readSeries(path, "p15kPa");
-    EXPECT_EQ(back.test, "p15kPa");
     ASSERT_EQ(back.columns.size(), full.columns.size());
     for (std::size_t c = 0; c < full.columns.size(); ++c) {
         EXPECT_EQ(back.columns[c].name, full.columns[c].name);
         EXPECT_EQ(back.columns[c].unit, full.columns[c].unit);
     }
-    EXPECT_EQ(back.stages, full.stages);
-    ASSERT_EQ(back.rows.size(), full.rows.size());
-    for (std::size_t k = 0; k < full.rows.size(); ++k) {
-        expectSameBits(back.rows[k], full.rows[k], "row " + std::to_string(k));
-    }
+    expectSameSeries(back, full);
 }
 
 TEST(RunFile, SeriesRewoundByAResumedRunIsCutBack) {
@@ -411,13 +417,7 @@ TEST(CsvSeries, NumbersRoundTripAndStagesAreQuoted) {
               std::string::npos)
         << text.substr(0, 300);
     EXPECT_NE(text.find("\"odd, \"\"quoted\"\" stage\""), std::string::npos);
-    const SeriesTable back = readSeriesCsv(path);
-    EXPECT_EQ(back.test, "p15kPa");
-    EXPECT_EQ(back.stages, t.stages);
-    ASSERT_EQ(back.rows.size(), t.rows.size());
-    for (std::size_t k = 0; k < t.rows.size(); ++k) {
-        expectSameBits(back.rows[k], t.rows[k], "row " + std::to_string(k));
-    }
+    expectSameSeries(readSeriesCsv(path), t);
 }
 
 TEST(CsvSeries, AppenderWritesOnlyNewRowsAndMirrorsTheTable) {

@@ -34,15 +34,10 @@ namespace grainlab::ui {
 namespace {
 
 using window_tests::click;
+using window_tests::freshFolder;
+using window_tests::freshRunsFolder;
 using window_tests::smallExperiment;
 using window_tests::waitFor;
-
-/// An empty folder test-runs/<name> in the working folder.
-QString freshFolder(const QString& name) {
-    QDir dir(QDir::current().filePath(QStringLiteral("test-runs/") + name));
-    dir.removeRecursively();
-    return dir.path();
-}
 
 QStringList runFolders(const QString& runs) {
     return QDir(runs).entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name);
@@ -89,8 +84,7 @@ int plotPixelsOf(ChartsPanel& charts, int chart, QColor colour, int tolerance) {
 TEST(WindowRun, IsRecordedInANewRunFolderWithTheEditedExperiment) {
     // Only the runs folder's variable and the window's controls: this test builds on the old
     // window too, where it finds no run folder.
-    const QString runs = freshFolder(QStringLiteral("recorded"));
-    qputenv("GRAINLAB_RUNS_DIR", runs.toUtf8());
+    const QString runs = freshRunsFolder(QStringLiteral("recorded"));
     MainWindow w;
     w.setExperiment(smallExperiment());
     w.resize(1400, 900);

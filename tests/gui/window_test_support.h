@@ -1,11 +1,12 @@
 #pragma once
 // What the window tests share: the small experiment (120 ovals, one confining pressure, shear to
-// 0.5 %) read from experiment text as a window run records it, waiting on the event loop, and
-// clicking a toolbar action like a user.
+// 0.5 %) read from experiment text as a window run records it, an emptied folder for its runs,
+// waiting on the event loop, and clicking a toolbar action like a user.
 #include <chrono>
 #include <string>
 
 #include <QAction>
+#include <QDir>
 #include <QTest>
 #include <QToolBar>
 
@@ -32,6 +33,21 @@ inline ExperimentConfig smallExperiment(double shearTarget = 0.005,
         j["test"] = test;
     }
     return parseExperimentText(j.dump(2), path);
+}
+
+/// An empty folder test-runs/<name> in the working folder.
+inline QString freshFolder(const QString& name) {
+    QDir dir(QDir::current().filePath(QStringLiteral("test-runs/") + name));
+    dir.removeRecursively();
+    return dir.path();
+}
+
+/// An empty folder test-runs/<name>, where the window's runs are then written
+/// (GRAINLAB_RUNS_DIR).
+inline QString freshRunsFolder(const QString& name) {
+    const QString runs = freshFolder(name);
+    qputenv("GRAINLAB_RUNS_DIR", runs.toUtf8());
+    return runs;
 }
 
 template <class Predicate>

@@ -16,14 +16,9 @@ namespace grainlab::ui {
 namespace {
 
 using window_tests::click;
+using window_tests::freshRunsFolder;
 using window_tests::smallExperiment;
 using window_tests::waitFor;
-
-QString freshFolder(const QString& name) {
-    QDir dir(QDir::current().filePath(QStringLiteral("test-runs/") + name));
-    dir.removeRecursively();
-    return dir.path();
-}
 
 /// The small experiment sheared at twice the quasi-static inertial number.
 ExperimentConfig fastExperiment() {
@@ -37,8 +32,7 @@ ExperimentConfig fastExperiment() {
 }
 
 TEST(WindowWarnings, AFastShearIsWarnedAboutInTheStatusBarAndTheRunFileHasTheSame) {
-    const QString runs = freshFolder(QStringLiteral("warnings"));
-    qputenv("GRAINLAB_RUNS_DIR", runs.toUtf8());
+    const QString runs = freshRunsFolder(QStringLiteral("warnings"));
     MainWindow w;
     w.setExperiment(fastExperiment());
     w.resize(1400, 900);
@@ -75,8 +69,7 @@ TEST(WindowWarnings, AFastShearIsWarnedAboutInTheStatusBarAndTheRunFileHasTheSam
 }
 
 TEST(WindowWarnings, AFailingRunNamesTheLastGoodCheckpointOfItsFolder) {
-    const QString runs = freshFolder(QStringLiteral("failing"));
-    qputenv("GRAINLAB_RUNS_DIR", runs.toUtf8());
+    const QString runs = freshRunsFolder(QStringLiteral("failing"));
     auto j = nlohmann::ordered_json::parse(smallExperiment().sourceText);
     j["stability"]["max_overlap_fraction"] = 1e-4; // no compaction can respect it
     j["record"]["snapshot_step_interval"] = 200;

@@ -22,9 +22,10 @@ namespace {
 namespace fs = std::filesystem;
 
 using test::freshFolder;
+using test::runStability;
+using test::runStabilityPreset;
+using test::stabilityPresetFile;
 using test::text;
-const auto run = test::runQuietly;
-const std::string kExe = GRAINLAB_EXE;
 
 std::size_t rows(const std::string& csv) {
     return std::size_t(std::count(csv.begin(), csv.end(), '\n')) - 1;
@@ -32,9 +33,8 @@ std::size_t rows(const std::string& csv) {
 
 TEST(ServoMapCommand, TinyMapEndToEndAndResumes) {
     const fs::path dir = freshFolder("servo-tiny");
-    ASSERT_EQ(run(kExe + " stability --preset servo-tiny --out " + dir.string() + " --quiet"), 0);
-    const ServoMapSpec spec =
-        readServoPreset(std::string(GRAINLAB_SOURCE_DIR) + "/resources/stability/servo-tiny.json");
+    ASSERT_EQ(runStabilityPreset("servo-tiny", dir), 0);
+    const ServoMapSpec spec = readServoPreset(stabilityPresetFile("servo-tiny"));
     const auto cells = servoCells(spec);
     ASSERT_EQ(cells.size(), 2u);
     fs::file_time_type first;
@@ -73,21 +73,19 @@ TEST(ServoMapCommand, TinyMapEndToEndAndResumes) {
 #endif
     // Resumes: only a removed cell runs again.
     fs::remove(dir / "cells" / (cells[1].id + ".json"));
-    ASSERT_EQ(run(kExe + " stability --preset servo-tiny --out " + dir.string() + " --quiet"), 0);
+    ASSERT_EQ(runStabilityPreset("servo-tiny", dir), 0);
     EXPECT_TRUE(fs::exists(dir / "cells" / (cells[1].id + ".json")));
     EXPECT_EQ(fs::last_write_time(dir / "cells" / (cells[0].id + ".json")), first);
-    EXPECT_EQ(run(kExe + " stability collect " + dir.string() + " --quiet"), 0);
+    EXPECT_EQ(runStability("collect " + dir.string() + " --quiet"), 0);
     // The emitted job list names the servo cells.
-    ASSERT_EQ(
-        run(kExe + " stability --preset servo-tiny --out " + dir.string() + " --emit parallel"), 0);
+    ASSERT_EQ(runStabilityPreset("servo-tiny", dir, "--emit parallel"), 0);
     EXPECT_NE(text(dir / "jobs.txt").find(cells[1].id), std::string::npos);
     fs::remove_all(dir);
 }
 
 TEST(GeometryMapCommand, TinyMapEndToEnd) {
     const fs::path dir = freshFolder("geometry-tiny");
-    ASSERT_EQ(run(kExe + " stability --preset geometry-tiny --out " + dir.string() + " --quiet"),
-              0);
+    ASSERT_EQ(runStabilityPreset("geometry-tiny", dir), 0);
     const std::string levels = text(dir / "geometry.csv");
     EXPECT_EQ(rows(levels), 3u * 3u); // three overlaps, three kernels
     EXPECT_NE(levels.find("overlap_fraction [-]"), std::string::npos);
@@ -98,13 +96,12 @@ TEST(GeometryMapCommand, TinyMapEndToEnd) {
     EXPECT_TRUE(fs::exists(dir / "figures" / "departure.svg"));
 #endif
     // One process: nothing to emit, no cells to collect.
-    EXPECT_NE(
-        run(kExe + " stability --preset geometry-tiny --out " + dir.string() + " --emit slurm"), 0);
-    EXPECT_NE(run(kExe + " stability collect " + dir.string()), 0);
+    EXPECT_NE(runStabilityPreset("geometry-tiny", dir, "--emit slurm"), 0);
+    EXPECT_NE(runStability("collect " + dir.string()), 0);
     // A preset of an unknown kind is refused.
     const fs::path bad = dir / "bad.json";
     std::ofstream(bad) << R"({"kind": "servos", "axes": {}})";
-    EXPECT_NE(run(kExe + " stability " + bad.string() + " --out " + (dir / "x").string()), 0);
+    EXPECT_NE(runStability(bad.string() + " --out " + (dir / "x").string()), 0);
     EXPECT_FALSE(fs::exists(dir / "x"));
     fs::remove_all(dir);
 }

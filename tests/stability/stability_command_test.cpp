@@ -23,15 +23,16 @@ namespace {
 namespace fs = std::filesystem;
 
 using test::freshFolder;
+using test::runStability;
+using test::runStabilityPreset;
+using test::stabilityPresetFile;
 using test::text;
 const auto run = test::runQuietly;
-const std::string kExe = GRAINLAB_EXE;
 
 TEST(StabilityCommand, TinyMapEndToEndAndResumes) {
     const fs::path dir = freshFolder("tiny");
-    ASSERT_EQ(run(kExe + " stability --preset tiny --out " + dir.string() + " --quiet"), 0);
-    const StabilityMapSpec spec =
-        readStabilityPreset(std::string(GRAINLAB_SOURCE_DIR) + "/resources/stability/tiny.json");
+    ASSERT_EQ(runStabilityPreset("tiny", dir), 0);
+    const StabilityMapSpec spec = readStabilityPreset(stabilityPresetFile("tiny"));
     const auto cells = stabilityCells(spec);
     ASSERT_EQ(cells.size(), 4u);
     std::map<std::string, fs::file_time_type> written;
@@ -70,7 +71,7 @@ TEST(StabilityCommand, TinyMapEndToEndAndResumes) {
     // Killed or finished, the same command redoes no finished cell: remove one result, and only
     // that cell runs again.
     fs::remove(dir / "cells" / (cells[1].id + ".json"));
-    ASSERT_EQ(run(kExe + " stability --preset tiny --out " + dir.string() + " --quiet"), 0);
+    ASSERT_EQ(runStabilityPreset("tiny", dir), 0);
     for (const StabilityCell& c : cells) {
         const auto now = fs::last_write_time(dir / "cells" / (c.id + ".json"));
         if (c.id == cells[1].id) {
@@ -79,16 +80,16 @@ TEST(StabilityCommand, TinyMapEndToEndAndResumes) {
             EXPECT_EQ(now, written[c.id]) << c.id << " was redone";
         }
     }
-    EXPECT_EQ(run(kExe + " stability collect " + dir.string() + " --quiet"), 0);
+    EXPECT_EQ(runStability("collect " + dir.string() + " --quiet"), 0);
     // A cell run again by hand (a resubmitted array task) finds its result and does nothing.
-    ASSERT_EQ(run(kExe + " stability cell " + dir.string() + " --cell " + cells[0].id), 0);
+    ASSERT_EQ(runStability("cell " + dir.string() + " --cell " + cells[0].id), 0);
     EXPECT_EQ(fs::last_write_time(dir / "cells" / (cells[0].id + ".json")), written[cells[0].id]);
     fs::remove_all(dir);
 }
 
 TEST(StabilityCommand, EmitsASlurmArrayAndAJobList) {
     const fs::path dir = freshFolder("emit");
-    ASSERT_EQ(run(kExe + " stability --preset full --out " + dir.string() + " --emit slurm"), 0);
+    ASSERT_EQ(runStabilityPreset("full", dir, "--emit slurm"), 0);
     const fs::path script = dir / "stability.slurm";
     ASSERT_TRUE(fs::exists(script));
     EXPECT_EQ(run("bash -n " + script.string()), 0);
@@ -96,20 +97,20 @@ TEST(StabilityCommand, EmitsASlurmArrayAndAJobList) {
     EXPECT_NE(s.find("#SBATCH --array=0-255"), std::string::npos);
     EXPECT_NE(s.find("eta0.4_kt2_local0.7_shear15kPa"), std::string::npos);
     EXPECT_FALSE(fs::exists(dir / "cells" / "eta1_kt0.25_none_gas.json")) << "emit runs nothing";
-    ASSERT_EQ(run(kExe + " stability --preset full --out " + dir.string() + " --emit parallel"), 0);
+    ASSERT_EQ(runStabilityPreset("full", dir, "--emit parallel"), 0);
     const std::string jobs = text(dir / "jobs.txt");
     EXPECT_EQ(std::count(jobs.begin(), jobs.end(), '\n'), 256);
     EXPECT_EQ(run("bash -n " + (dir / "jobs.txt").string()), 0);
     // Collecting a map with no cell done yet: an empty table and exit status 3.
-    EXPECT_EQ(run(kExe + " stability collect " + dir.string() + " --quiet"), 3);
+    EXPECT_EQ(runStability("collect " + dir.string() + " --quiet"), 3);
     fs::remove_all(dir);
 }
 
 TEST(StabilityCommand, RefusesAFolderOfAnotherMap) {
     const fs::path dir = freshFolder("other");
-    ASSERT_EQ(run(kExe + " stability --preset full --out " + dir.string() + " --emit parallel"), 0);
-    EXPECT_NE(run(kExe + " stability --preset tiny --out " + dir.string() + " --quiet"), 0);
-    EXPECT_NE(run(kExe + " stability --out " + dir.string()), 0) << "no preset given";
+    ASSERT_EQ(runStabilityPreset("full", dir, "--emit parallel"), 0);
+    EXPECT_NE(runStabilityPreset("tiny", dir), 0);
+    EXPECT_NE(runStability("--out " + dir.string()), 0) << "no preset given";
     fs::remove_all(dir);
 }
 

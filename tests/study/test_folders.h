@@ -1,7 +1,7 @@
 #pragma once
 // Folders, files and commands for the study and stability tests: a fresh folder per test process
-// (ctest runs the tests side by side), a file's whole text, a shell command's exit status, and
-// the processes the pool started (from /proc).
+// (ctest runs the tests side by side), a file's whole text, a shell command's exit status, a
+// stability preset run, and the processes the pool started (from /proc).
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -37,6 +37,24 @@ inline std::string text(const std::filesystem::path& p) {
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
+}
+
+#ifdef GRAINLAB_EXE
+/// `grainlab stability <arguments>`, its output dropped: its exit status.
+inline int runStability(const std::string& arguments) {
+    return runQuietly(std::string(GRAINLAB_EXE) + " stability " + arguments);
+}
+
+/// `grainlab stability --preset <preset> --out <out> <then>`, its output dropped: its exit status.
+inline int runStabilityPreset(const std::string& preset, const std::filesystem::path& out,
+                              const std::string& then = "--quiet") {
+    return runStability("--preset " + preset + " --out " + out.string() + " " + then);
+}
+#endif
+
+/// The shipped stability preset `name` (resources/stability/<name>.json).
+inline std::string stabilityPresetFile(const std::string& name) {
+    return std::string(GRAINLAB_SOURCE_DIR) + "/resources/stability/" + name + ".json";
 }
 
 /// The pids of the processes whose parent is `parent` (from /proc).

@@ -94,6 +94,26 @@ bool exportFigure(const QString& path, QSize size,
         QObject::tr("%1: unknown figure format '%2' (use png, svg or pdf)").arg(path, suffix));
 }
 
+bool exportFigureFormats(const QString& folder, const QString& name, const QStringList& formats,
+                         QSize size, const std::function<void(QPainter&, const QRectF&)>& paint,
+                         QStringList& written, QString* error) {
+    for (const QString& format : formats) {
+        const QString path = QDir(folder).filePath(name + "." + format);
+        if (!exportFigure(
+                path, size, [&](QPainter& p, QSize s) { paint(p, QRectF(QPointF(0, 0), s)); },
+                error)) {
+            return false;
+        }
+        written << path;
+    }
+    return true;
+}
+
+bool makeFigureFolder(const QString& folder, QString* error) {
+    return QDir().mkpath(folder) ||
+           fail(error, QObject::tr("%1: cannot create the folder").arg(folder));
+}
+
 bool exportScene(const SceneView& view, const QString& path, QSize size, QString* error) {
     // A copy of the renderer, so that the view on screen is not disturbed.
     SceneRenderer renderer = view.renderer();
@@ -109,8 +129,7 @@ QStringList exportFigureSet(const QString& folder, const SceneView* scene,
                             const ChartsPanel* charts, const std::vector<SeriesTable>& series,
                             const FigureSetOptions& options, QString* error) {
     QStringList written;
-    if (!QDir().mkpath(folder)) {
-        fail(error, QObject::tr("%1: cannot create the folder").arg(folder));
+    if (!makeFigureFolder(folder, error)) {
         return written;
     }
     const QDir dir(folder);

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 
-#include <QDir>
 #include <QObject>
 #include <QPainter>
 
@@ -69,22 +68,13 @@ QStringList writeGeometryFigures(const QString& folder, const GeometryMapSpec& s
                                  const std::vector<GeometryLevel>& levels, double guard,
                                  QString* error, const QStringList& formats, QSize size) {
     QStringList written;
-    if (!QDir().mkpath(folder)) {
-        if (error) {
-            *error = QObject::tr("%1: cannot create the folder").arg(folder);
-        }
+    if (!makeFigureFolder(folder, error)) {
         return written;
     }
     const PlotPainter plot = geometryDeparturePlot(spec, levels, guard);
-    for (const QString& format : formats) {
-        const QString path = QDir(folder).filePath("departure." + format);
-        if (!exportFigure(
-                path, size, [&](QPainter& p, QSize s) { plot.paint(p, QRectF(QPointF(0, 0), s)); },
-                error)) {
-            return written;
-        }
-        written << path;
-    }
+    exportFigureFormats(
+        folder, "departure", formats, size, [&](QPainter& p, const QRectF& r) { plot.paint(p, r); },
+        written, error);
     return written;
 }
 

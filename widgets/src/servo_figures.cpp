@@ -3,10 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <map>
 
-#include <QDir>
 #include <QObject>
 #include <QPainter>
 
@@ -15,21 +13,6 @@
 
 namespace grainlab::ui {
 namespace {
-
-bool exportBoth(const QString& folder, const QString& name, const QStringList& formats, QSize size,
-                const std::function<void(QPainter&, const QRectF&)>& paint, QStringList& written,
-                QString* error) {
-    for (const QString& format : formats) {
-        const QString path = QDir(folder).filePath(name + "." + format);
-        if (!exportFigure(
-                path, size, [&](QPainter& p, QSize s) { paint(p, QRectF(QPointF(0, 0), s)); },
-                error)) {
-            return false;
-        }
-        written << path;
-    }
-    return true;
-}
 
 QString kPa(double pressure) {
     return QString::number(pressure / 1e3, 'g', 6);
@@ -131,10 +114,7 @@ QStringList writeServoFigures(const QString& folder, const ServoMapSpec& spec,
                               const std::vector<ServoCellResult>& results, double gainBound,
                               QString* error, const QStringList& formats, QSize size) {
     QStringList written;
-    if (!QDir().mkpath(folder)) {
-        if (error) {
-            *error = QObject::tr("%1: cannot create the folder").arg(folder);
-        }
+    if (!makeFigureFolder(folder, error)) {
         return written;
     }
     for (double p : spec.pressures) {
@@ -142,7 +122,7 @@ QStringList writeServoFigures(const QString& folder, const ServoMapSpec& spec,
             const HeatMapPainter map = servoResponseMap(spec, results, p, eta);
             const QString name =
                 QString("response_eta%1_p%2kPa").arg(QString::number(eta, 'g', 6), kPa(p));
-            if (!exportBoth(
+            if (!exportFigureFormats(
                     folder, name, formats, size,
                     [&](QPainter& painter, const QRectF& r) { map.paint(painter, r); }, written,
                     error)) {
@@ -151,7 +131,7 @@ QStringList writeServoFigures(const QString& folder, const ServoMapSpec& spec,
         }
     }
     const PlotPainter plot = servoStableGainPlot(results, gainBound);
-    exportBoth(
+    exportFigureFormats(
         folder, "stable_gain", formats, size,
         [&](QPainter& painter, const QRectF& r) { plot.paint(painter, r); }, written, error);
     return written;

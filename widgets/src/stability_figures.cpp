@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <QDir>
 #include <QObject>
 #include <QPainter>
 
@@ -159,10 +158,7 @@ QStringList writeStabilityFigures(const QString& folder, const StabilityMapSpec&
                                   const std::vector<StabilityCellResult>& results, QString* error,
                                   const QStringList& formats, QSize size) {
     QStringList written;
-    if (!QDir().mkpath(folder)) {
-        if (error) {
-            *error = QObject::tr("%1: cannot create the folder").arg(folder);
-        }
+    if (!makeFigureFolder(folder, error)) {
         return written;
     }
     const StabilityAxis axes[] = {StabilityAxis::AspectRatio, StabilityAxis::StiffnessRatio,
@@ -179,15 +175,10 @@ QStringList writeStabilityFigures(const QString& folder, const StabilityMapSpec&
                     QString("%1_%2_%3")
                         .arg(value == StabilityValue::Limit ? "limit" : "ratio",
                              stabilityAxisName(axes[a]), stabilityAxisName(axes[b]));
-                for (const QString& format : formats) {
-                    const QString path = QDir(folder).filePath(name + "." + format);
-                    if (!exportFigure(
-                            path, size,
-                            [&](QPainter& p, QSize s) { map.paint(p, QRectF(QPointF(0, 0), s)); },
-                            error)) {
-                        return written;
-                    }
-                    written << path;
+                if (!exportFigureFormats(
+                        folder, name, formats, size,
+                        [&](QPainter& p, const QRectF& r) { map.paint(p, r); }, written, error)) {
+                    return written;
                 }
             }
         }

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include <QDir>
+#include <QObject>
 #include <QPainter>
 
 #include "grainlab/measures.h"
@@ -231,24 +231,13 @@ QStringList writeStudyFigures(const QString& folder, const StudySpec& spec, cons
                               const std::vector<RunResult>& results, const StudySummary& summary,
                               QString* error, const QStringList& formats, QSize size) {
     QStringList written;
-    if (!QDir().mkpath(folder)) {
-        if (error) {
-            *error = QObject::tr("%1: cannot create the folder").arg(folder);
-        }
+    if (!makeFigureFolder(folder, error)) {
         return written;
     }
     const auto save = [&](const PlotPainter& plot, const QString& name) {
-        for (const QString& format : formats) {
-            const QString path = QDir(folder).filePath(name + "." + format);
-            if (!exportFigure(
-                    path, size,
-                    [&](QPainter& p, QSize s) { plot.paint(p, QRectF(QPointF(0, 0), s)); },
-                    error)) {
-                return false;
-            }
-            written << path;
-        }
-        return true;
+        return exportFigureFormats(
+            folder, name, formats, size, [&](QPainter& p, const QRectF& r) { plot.paint(p, r); },
+            written, error);
     };
     for (const std::string& test : summary.tests) {
         for (const std::string& metric : spec.deciding) {

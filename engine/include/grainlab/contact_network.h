@@ -42,4 +42,17 @@ struct ContactNetwork {
     double cellArea() const { return cell[0] * cell[3] - cell[1] * cell[2]; }
 };
 
+/// The contacts of a network as one array per field, in the network's order: the layout in
+/// which the run file and the Python module hand them out.
+struct ContactColumns {
+    std::vector<std::int32_t> first, second, shift1, shift2;
+    std::vector<double> normal1, normal2;
+    std::vector<double> point1, point2; ///< the contact point itself, x_A + point [m]
+    std::vector<double> branch1, branch2;
+    std::vector<double> overlap, normalForce, tangentialForce;
+    std::vector<std::uint8_t> sliding; ///< 1 at the Coulomb limit, else 0
+};
+
+ContactColumns contactColumns(const ContactNetwork& network);
+
 } // namespace grainlab

@@ -10,26 +10,20 @@
 
 #include "grainlab/contact_geometry.h"
 #include "grainlab/csv_series.h"
+#include "grainlab/enum_names.h"
 #include "grainlab/random.h"
 #include "grainlab/simulation.h"
 #include "grainlab/strict_json.h"
+#include "map_preset.h"
 
 namespace grainlab {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-std::string number(double v) {
-    return std::isfinite(v) ? fmt::format("{:.9g}", v) : std::string();
-}
-
-std::vector<double> requiredNumbers(const JsonSection& axes, const std::string& key, Range range) {
-    const auto v = axes.numbers(key, range);
-    if (!v) {
-        axes.missing(key, "a non-empty array of numbers " + range.text());
-    }
-    return *v;
-}
+using map_preset::csvNumber;
+using map_preset::presetName;
+using map_preset::requiredNumbers;
 
 /// The overlap of the two supports along world direction `angle` [m].
 struct SupportOverlap {
@@ -50,9 +44,7 @@ struct SupportOverlap {
 } // namespace
 
 GeometryMapSpec readGeometryPreset(const std::string& path) {
-    GeometryMapSpec spec = parseGeometryPreset(readInputFile(path, "stability preset"), path);
-    spec.sourcePath = path;
-    return spec;
+    return map_preset::readPresetFile(path, parseGeometryPreset);
 }
 
 GeometryMapSpec parseGeometryPreset(const std::string& text, const std::string& file) {
@@ -63,11 +55,7 @@ GeometryMapSpec parseGeometryPreset(const std::string& text, const std::string& 
                           {"kind", "name", "description", "pairs", "smallest_width", "tolerance",
                            "angle_tolerance", "seed", "axes"});
     top.choice("kind", {"geometry"}, std::nullopt);
-    spec.name = top.text("name", spec.name);
-    if (spec.name.find_first_of("/\\ ") != std::string::npos) {
-        top.refuse("name", top.at("name"), "a name without spaces or slashes");
-    }
-    top.text("description", "-");
+    spec.name = presetName(top, spec.name);
     spec.pairs = int(top.integer("pairs", 1, 1000000, spec.pairs));
     spec.smallestWidth = top.number("smallest_width", closed(1e-9, 1e3), spec.smallestWidth);
     spec.tolerance = top.number("tolerance", open(0, 1), spec.tolerance);
@@ -183,15 +171,11 @@ KernelContact engineContact(const OvalShape& A, double thetaA, const OvalShape& 
 }
 
 std::string geometryKernelName(GeometryKernel kernel) {
-    switch (kernel) {
-    case GeometryKernel::Engine:
-        return "engine";
-    case GeometryKernel::SixteenPair:
-        return "sixteen_pair";
-    case GeometryKernel::FourPair:
-        return "four_pair";
-    }
-    return "engine";
+    static constexpr EnumName<GeometryKernel> kNames[] = {
+        {GeometryKernel::Engine, "engine"},
+        {GeometryKernel::SixteenPair, "sixteen_pair"},
+        {GeometryKernel::FourPair, "four_pair"}};
+    return enumName(kNames, kernel, "engine");
 }
 
 std::vector<GeometryLevel> measureGeometryMap(const GeometryMapSpec& spec,
@@ -319,11 +303,11 @@ std::string geometryCsv(const std::vector<GeometryLevel>& levels) {
     for (const GeometryLevel& l : levels) {
         for (int k = 0; k < 3; ++k) {
             const KernelDeparture& d = l.kernels[k];
-            s += csvLine({number(l.aspectRatio), number(l.sizeRatio), number(l.overlap),
+            s += csvLine({csvNumber(l.aspectRatio), csvNumber(l.sizeRatio), csvNumber(l.overlap),
                           geometryKernelName(GeometryKernel(k)), std::to_string(l.pairs),
-                          std::to_string(l.unreachable), number(d.maxDeparture),
+                          std::to_string(l.unreachable), csvNumber(d.maxDeparture),
                           std::to_string(d.departures), std::to_string(d.wrongNormals),
-                          number(d.maxNormalError)});
+                          csvNumber(d.maxNormalError)});
         }
     }
     return s;
@@ -337,11 +321,11 @@ std::string geometryLimitsCsv(const std::vector<GeometryLine>& lines, double gua
         for (int k = 0; k < 3; ++k) {
             const double start = l.departureStart[k];
             // No departure up to the largest level: the margin is at least largest / guard.
-            s += csvLine({number(l.aspectRatio), geometryKernelName(GeometryKernel(k)),
-                          start > 0 ? "yes" : "no", start > 0 ? number(start) : std::string(),
-                          start > 0 ? number(l.departureBeyond[k]) : std::string(),
-                          number(l.largestMeasured), number(guard),
-                          number((start > 0 ? start : l.largestMeasured) / guard)});
+            s += csvLine({csvNumber(l.aspectRatio), geometryKernelName(GeometryKernel(k)),
+                          start > 0 ? "yes" : "no", start > 0 ? csvNumber(start) : std::string(),
+                          start > 0 ? csvNumber(l.departureBeyond[k]) : std::string(),
+                          csvNumber(l.largestMeasured), csvNumber(guard),
+                          csvNumber((start > 0 ? start : l.largestMeasured) / guard)});
         }
     }
     return s;

@@ -12,43 +12,31 @@
 #include "grainlab/csv_series.h"
 #include "grainlab/simulation_state.h"
 #include "grainlab/strict_json.h"
+#include "map_preset.h"
 
 namespace grainlab {
 namespace {
 
-std::string shortNumber(double v) {
-    return fmt::format("{:.6g}", v);
-}
-
-/// A CSV number: round-trip precision; empty for a non-finite value (never "nan" in a table).
-std::string number(double v) {
-    return std::isfinite(v) ? fmt::format("{:.9g}", v) : std::string();
-}
-
-std::vector<double> requiredNumbers(const JsonSection& axes, const std::string& key, Range range) {
-    const auto v = axes.numbers(key, range);
-    if (!v) {
-        axes.missing(key, "a non-empty array of numbers " + range.text());
-    }
-    return *v;
-}
+using map_preset::csvNumber;
+using map_preset::presetName;
+using map_preset::readSampleGrains;
+using map_preset::requiredNumbers;
+using map_preset::shortNumber;
 
 std::vector<std::string> cellFields(const ServoCell& c, const ServoMapSpec& spec) {
     return {c.id,
-            number(c.pressure),
-            number(c.aspectRatio),
+            csvNumber(c.pressure),
+            csvNumber(c.aspectRatio),
             std::to_string(c.interval),
-            number(double(c.interval) * spec.strainPerStep),
-            number(servoLagNumber(c.interval, spec.strainPerStep,
-                                  SimulationParameters{}.normalStiffness, c.pressure))};
+            csvNumber(double(c.interval) * spec.strainPerStep),
+            csvNumber(servoLagNumber(c.interval, spec.strainPerStep,
+                                     SimulationParameters{}.normalStiffness, c.pressure))};
 }
 
 } // namespace
 
 ServoMapSpec readServoPreset(const std::string& path) {
-    ServoMapSpec spec = parseServoPreset(readInputFile(path, "stability preset"), path);
-    spec.sourcePath = path;
-    return spec;
+    return map_preset::readPresetFile(path, parseServoPreset);
 }
 
 ServoMapSpec parseServoPreset(const std::string& text, const std::string& file) {
@@ -59,23 +47,14 @@ ServoMapSpec parseServoPreset(const std::string& text, const std::string& file) 
         file, root, "",
         {"kind", "name", "description", "scene", "shear", "judge", "search", "axes"});
     top.choice("kind", {"servo"}, std::nullopt);
-    spec.name = top.text("name", spec.name);
-    if (spec.name.find_first_of("/\\ ") != std::string::npos) {
-        top.refuse("name", top.at("name"), "a name without spaces or slashes");
-    }
-    top.text("description", "-");
+    spec.name = presetName(top, spec.name);
 
     const JsonSection scene =
         top.child("scene",
                   {"grains", "smallest_width", "largest_width", "size_classes", "seed", "time_step",
                    "friction", "compaction_rate"},
                   false);
-    spec.grains = int(scene.integer("grains", 16, 20000, spec.grains));
-    spec.smallestWidth = scene.number("smallest_width", positive(), spec.smallestWidth);
-    spec.largestWidth = scene.number("largest_width", Range{spec.smallestWidth, 1e300, true, true},
-                                     std::max(spec.largestWidth, spec.smallestWidth));
-    spec.sizeClasses = int(scene.integer("size_classes", 1, 1000, spec.sizeClasses));
-    spec.seed = std::uint64_t(scene.integer("seed", 0, std::int64_t(1) << 53, 1));
+    readSampleGrains(scene, spec);
     spec.timeStep = scene.number("time_step", openClosed(0, 1e-3), spec.timeStep);
     spec.friction = scene.number("friction", closed(0, 10), spec.friction);
     spec.compactionRate = scene.number("compaction_rate", openClosed(0, 1e3), spec.compactionRate);
@@ -177,10 +156,7 @@ std::string servoCellResultJson(const ServoCellResult& r) {
     j["pressure"] = r.cell.pressure;
     j["aspect_ratio"] = r.cell.aspectRatio;
     j["interval"] = r.cell.interval;
-    j["bracketed"] = r.limit.bracketed;
-    j["limit"] = r.limit.limit;
-    j["limit_low"] = r.limit.low;
-    j["limit_high"] = r.limit.high;
+    map_preset::writeBracket(j, r.limit);
     j["probes"] = r.limit.probes;
     j["above_limit"] = servoResponseName(r.aboveLimit);
     j["stiffness_over_pressure"] = r.stiffnessOverPressure;
@@ -214,10 +190,7 @@ ServoCellResult parseServoCellResult(const std::string& text, const std::string&
         r.cell.pressure = j.at("pressure").get<double>();
         r.cell.aspectRatio = j.at("aspect_ratio").get<double>();
         r.cell.interval = j.at("interval").get<int>();
-        r.limit.bracketed = j.at("bracketed").get<bool>();
-        r.limit.limit = j.at("limit").get<double>();
-        r.limit.low = j.at("limit_low").get<double>();
-        r.limit.high = j.at("limit_high").get<double>();
+        map_preset::readBracket(j, r.limit);
         r.limit.probes = j.at("probes").get<int>();
         r.aboveLimit = servoResponseFromName(j.at("above_limit").get<std::string>());
         r.stiffnessOverPressure = j.at("stiffness_over_pressure").get<double>();
@@ -268,12 +241,12 @@ std::string servoLimitsCsv(const ServoMapSpec& spec, const std::vector<ServoCell
         std::vector<std::string> row = cellFields(r.cell, spec);
         const double smallest = r.smallestSteadyGain(), largest = r.largestSteadyGain();
         for (std::string f :
-             {number(r.limit.limit), number(r.limit.low), number(r.limit.high),
+             {csvNumber(r.limit.limit), csvNumber(r.limit.low), csvNumber(r.limit.high),
               std::string(r.limit.bracketed ? "yes" : "no"), servoResponseName(r.aboveLimit),
-              smallest > 0 ? number(smallest) : std::string(),
-              largest > 0 ? number(largest) : std::string(), number(r.bestMaxError()),
-              number(r.stiffnessOverPressure), std::to_string(r.limit.probes),
-              std::string(r.compactionCalm ? "yes" : "no"), number(r.seconds)}) {
+              smallest > 0 ? csvNumber(smallest) : std::string(),
+              largest > 0 ? csvNumber(largest) : std::string(), csvNumber(r.bestMaxError()),
+              csvNumber(r.stiffnessOverPressure), std::to_string(r.limit.probes),
+              std::string(r.compactionCalm ? "yes" : "no"), csvNumber(r.seconds)}) {
             row.push_back(std::move(f));
         }
         s += csvLine(row);
@@ -290,13 +263,13 @@ std::string servoRunsCsv(const std::vector<ServoCellResult>& results) {
     for (const ServoCellResult& r : results) {
         for (const ServoRun& run : r.runs) {
             const ServoErrorStats& e = run.stats;
-            s += csvLine({r.cell.id, number(r.cell.pressure), number(r.cell.aspectRatio),
-                          std::to_string(r.cell.interval), number(run.gain),
+            s += csvLine({r.cell.id, csvNumber(r.cell.pressure), csvNumber(r.cell.aspectRatio),
+                          std::to_string(r.cell.interval), csvNumber(run.gain),
                           run.grid ? "grid" : "bisection", servoResponseName(run.response),
-                          number(e.maxError), number(e.meanError), number(e.rmsError),
-                          number(e.alternating), number(e.reversals), number(e.transientMax),
-                          std::to_string(e.steps), std::to_string(e.updates),
-                          e.stopped ? "yes" : "no", e.stopCause});
+                          csvNumber(e.maxError), csvNumber(e.meanError), csvNumber(e.rmsError),
+                          csvNumber(e.alternating), csvNumber(e.reversals),
+                          csvNumber(e.transientMax), std::to_string(e.steps),
+                          std::to_string(e.updates), e.stopped ? "yes" : "no", e.stopCause});
         }
     }
     return s;

@@ -7,30 +7,27 @@
 
 #include <fmt/format.h>
 
+#include "grainlab/enum_names.h"
 #include "grainlab/simulation.h"
 
 namespace grainlab {
 
+namespace {
+
+constexpr EnumName<ServoResponse> kResponseNames[] = {{ServoResponse::Steady, "steady"},
+                                                      {ServoResponse::Lagging, "lagging"},
+                                                      {ServoResponse::Oscillating, "oscillating"},
+                                                      {ServoResponse::Diverging, "diverging"}};
+
+} // namespace
+
 std::string servoResponseName(ServoResponse response) {
-    switch (response) {
-    case ServoResponse::Steady:
-        return "steady";
-    case ServoResponse::Lagging:
-        return "lagging";
-    case ServoResponse::Oscillating:
-        return "oscillating";
-    case ServoResponse::Diverging:
-        return "diverging";
-    }
-    return "steady";
+    return enumName(kResponseNames, response, "steady");
 }
 
 ServoResponse servoResponseFromName(const std::string& name) {
-    for (ServoResponse r : {ServoResponse::Steady, ServoResponse::Lagging,
-                            ServoResponse::Oscillating, ServoResponse::Diverging}) {
-        if (servoResponseName(r) == name) {
-            return r;
-        }
+    if (const auto response = enumFromName(kResponseNames, name)) {
+        return *response;
     }
     throw std::invalid_argument(fmt::format("servo response {}: not a response", name));
 }

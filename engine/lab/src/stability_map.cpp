@@ -8,14 +8,16 @@
 #include <nlohmann/json.hpp>
 
 #include "grainlab/strict_json.h"
+#include "map_preset.h"
 
 namespace grainlab {
 namespace {
 
-/// A number short and exact enough for ids and labels: 0.05, 15, 1e+05.
-std::string shortNumber(double v) {
-    return fmt::format("{:.6g}", v);
-}
+using map_preset::csvNumber;
+using map_preset::presetName;
+using map_preset::readSampleGrains;
+using map_preset::requiredNumbers;
+using map_preset::shortNumber;
 
 /// The object at index i of the array `key` of `parent`, as a section.
 JsonSection element(const std::string& file, const JsonSection& parent, const std::string& key,
@@ -88,15 +90,11 @@ std::string field(const std::string& s) {
     return out + "\"";
 }
 
-std::string number(double v) {
-    return std::isfinite(v) ? fmt::format("{:.9g}", v) : std::string();
-}
-
 std::string axesFields(const StabilityCell& c) {
-    return fmt::format("{},{},{},{},{},{},{},{}", field(c.id), number(c.aspectRatio),
-                       number(c.stiffnessRatio), dampingName(c.damping.kind),
-                       number(c.damping.coefficient), packingName(c.packing.kind),
-                       number(c.packing.pressure),
+    return fmt::format("{},{},{},{},{},{},{},{}", field(c.id), csvNumber(c.aspectRatio),
+                       csvNumber(c.stiffnessRatio), dampingName(c.damping.kind),
+                       csvNumber(c.damping.coefficient), packingName(c.packing.kind),
+                       csvNumber(c.packing.pressure),
                        field(dampingLabel(c.damping) + " / " + packingLabel(c.packing)));
 }
 
@@ -117,9 +115,7 @@ std::string stabilityPresetKind(const std::string& text, const std::string& file
 }
 
 StabilityMapSpec readStabilityPreset(const std::string& path) {
-    StabilityMapSpec spec = parseStabilityPreset(readInputFile(path, "stability preset"), path);
-    spec.sourcePath = path;
-    return spec;
+    return map_preset::readPresetFile(path, parseStabilityPreset);
 }
 
 StabilityMapSpec parseStabilityPreset(const std::string& text, const std::string& file) {
@@ -129,23 +125,14 @@ StabilityMapSpec parseStabilityPreset(const std::string& text, const std::string
     const JsonSection top(file, root, "",
                           {"kind", "name", "description", "scene", "probe", "axes"});
     top.choice("kind", {"time_step"}, std::string("time_step"));
-    spec.name = top.text("name", spec.name);
-    if (spec.name.find_first_of("/\\ ") != std::string::npos) {
-        top.refuse("name", top.at("name"), "a name without spaces or slashes");
-    }
-    top.text("description", "-");
+    spec.name = presetName(top, spec.name);
 
     const JsonSection scene =
         top.child("scene",
                   {"grains", "smallest_width", "largest_width", "size_classes", "seed", "friction",
                    "gas", "shear", "compaction_rate"},
                   false);
-    spec.grains = int(scene.integer("grains", 16, 20000, spec.grains));
-    spec.smallestWidth = scene.number("smallest_width", positive(), spec.smallestWidth);
-    spec.largestWidth = scene.number("largest_width", Range{spec.smallestWidth, 1e300, true, true},
-                                     std::max(spec.largestWidth, spec.smallestWidth));
-    spec.sizeClasses = int(scene.integer("size_classes", 1, 1000, spec.sizeClasses));
-    spec.seed = std::uint64_t(scene.integer("seed", 0, std::int64_t(1) << 53, 1));
+    readSampleGrains(scene, spec);
     spec.friction = scene.number("friction", closed(0, 10), spec.friction);
     spec.compactionRate = scene.number("compaction_rate", openClosed(0, 1e3), spec.compactionRate);
     const JsonSection gas = scene.child("gas", {"gap", "speed"}, false);
@@ -175,15 +162,8 @@ StabilityMapSpec parseStabilityPreset(const std::string& text, const std::string
     const JsonSection axes =
         top.child("axes", {"aspect_ratio", "stiffness_ratio", "damping", "packing"}, true,
                   "an object with aspect_ratio, stiffness_ratio, damping and packing");
-    const auto required = [&](const std::string& key, Range range) {
-        const auto v = axes.numbers(key, range);
-        if (!v) {
-            axes.missing(key, "a non-empty array of numbers " + range.text());
-        }
-        return *v;
-    };
-    spec.aspectRatios = required("aspect_ratio", Range{0.2, 1.0, true, true});
-    spec.stiffnessRatios = required("stiffness_ratio", Range{0.01, 100, true, true});
+    spec.aspectRatios = requiredNumbers(axes, "aspect_ratio", Range{0.2, 1.0, true, true});
+    spec.stiffnessRatios = requiredNumbers(axes, "stiffness_ratio", Range{0.01, 100, true, true});
     spec.dampings.clear();
     for (std::size_t i = 0, n = arrayLength(axes, "damping", "damping objects"); i < n; ++i) {
         spec.dampings.push_back(
@@ -245,10 +225,7 @@ std::string cellResultJson(const StabilityCellResult& r) {
     j["packing"] = packingName(r.cell.packing.kind);
     j["pressure"] = r.cell.packing.pressure;
     j["time_unit"] = r.timeUnit;
-    j["bracketed"] = r.limit.bracketed;
-    j["limit"] = r.limit.limit;
-    j["limit_low"] = r.limit.low;
-    j["limit_high"] = r.limit.high;
+    map_preset::writeBracket(j, r.limit);
     j["detector"] = blowUpName(r.limit.detector);
     j["detector_step"] = r.limit.detectorStep;
     j["detector_detail"] = r.limit.detail;
@@ -287,10 +264,7 @@ StabilityCellResult parseCellResult(const std::string& text, const std::string& 
                                                    : PackingKind::Shear;
         r.cell.packing.pressure = j.at("pressure").get<double>();
         r.timeUnit = j.at("time_unit").get<double>();
-        r.limit.bracketed = j.at("bracketed").get<bool>();
-        r.limit.limit = j.at("limit").get<double>();
-        r.limit.low = j.at("limit_low").get<double>();
-        r.limit.high = j.at("limit_high").get<double>();
+        map_preset::readBracket(j, r.limit);
         const std::string detector = j.at("detector").get<std::string>();
         for (BlowUp b : {BlowUp::None, BlowUp::NonFinite, BlowUp::Displacement, BlowUp::Overlap,
                          BlowUp::KineticEnergy, BlowUp::EnergyResidual, BlowUp::UnbalancedFloor,
@@ -327,14 +301,14 @@ std::string limitsCsv(const std::vector<StabilityCellResult>& results) {
          "time_unit [s],detector,detector_step [-],probes [-],compaction_calm,cell_seconds [s]\n";
     for (const StabilityCellResult& r : results) {
         s += axesFields(r.cell);
-        s += fmt::format(",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", number(r.limit.limit),
-                         number(r.limit.low), number(r.limit.high),
-                         r.limit.bracketed ? "yes" : "no", number(r.estimate),
-                         number(r.estimateTranslational), number(r.estimateRotational),
-                         number(r.estimate > 0 ? r.limit.limit / r.estimate : NAN),
-                         number(r.limit.limit * r.timeUnit), number(r.timeUnit),
+        s += fmt::format(",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+                         csvNumber(r.limit.limit), csvNumber(r.limit.low), csvNumber(r.limit.high),
+                         r.limit.bracketed ? "yes" : "no", csvNumber(r.estimate),
+                         csvNumber(r.estimateTranslational), csvNumber(r.estimateRotational),
+                         csvNumber(r.estimate > 0 ? r.limit.limit / r.estimate : NAN),
+                         csvNumber(r.limit.limit * r.timeUnit), csvNumber(r.timeUnit),
                          blowUpName(r.limit.detector), r.limit.detectorStep, r.limit.probes,
-                         r.compactionCalm ? "yes" : "no", number(r.seconds));
+                         r.compactionCalm ? "yes" : "no", csvNumber(r.seconds));
     }
     return s;
 }
@@ -346,9 +320,9 @@ std::string accuracyCsv(const std::vector<StabilityCellResult>& results) {
     for (const StabilityCellResult& r : results) {
         for (const AccuracyPoint& a : r.accuracy) {
             s += axesFields(r.cell);
-            s += fmt::format(",{},{},{},{},{}\n", number(a.fraction), number(a.step),
-                             a.stable ? "yes" : "no", number(a.maxResidual),
-                             number(a.finalResidual));
+            s += fmt::format(",{},{},{},{},{}\n", csvNumber(a.fraction), csvNumber(a.step),
+                             a.stable ? "yes" : "no", csvNumber(a.maxResidual),
+                             csvNumber(a.finalResidual));
         }
     }
     return s;

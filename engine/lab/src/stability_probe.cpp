@@ -8,31 +8,23 @@
 
 #include <fmt/format.h>
 
+#include "grainlab/enum_names.h"
 #include "grainlab/measures.h"
 #include "grainlab/simulation.h"
 
 namespace grainlab {
 
 std::string blowUpName(BlowUp kind) {
-    switch (kind) {
-    case BlowUp::None:
-        return "none";
-    case BlowUp::NonFinite:
-        return "non_finite";
-    case BlowUp::Displacement:
-        return "displacement";
-    case BlowUp::Overlap:
-        return "overlap";
-    case BlowUp::KineticEnergy:
-        return "kinetic_energy";
-    case BlowUp::EnergyResidual:
-        return "energy_residual";
-    case BlowUp::UnbalancedFloor:
-        return "unbalanced_force_floor";
-    case BlowUp::EngineStop:
-        return "engine_stop";
-    }
-    return "none";
+    static constexpr EnumName<BlowUp> kNames[] = {
+        {BlowUp::None, "none"},
+        {BlowUp::NonFinite, "non_finite"},
+        {BlowUp::Displacement, "displacement"},
+        {BlowUp::Overlap, "overlap"},
+        {BlowUp::KineticEnergy, "kinetic_energy"},
+        {BlowUp::EnergyResidual, "energy_residual"},
+        {BlowUp::UnbalancedFloor, "unbalanced_force_floor"},
+        {BlowUp::EngineStop, "engine_stop"}};
+    return enumName(kNames, kind, "none");
 }
 
 double probeTimeUnit(const SimulationState& state) {

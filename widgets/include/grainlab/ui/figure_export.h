@@ -15,6 +15,7 @@
 
 class QGuiApplication;
 class QPainter;
+class QRectF;
 
 namespace grainlab::ui {
 
@@ -31,6 +32,15 @@ std::unique_ptr<QGuiApplication> headlessApplicationIfNone();
 /// failure.
 bool exportFigure(const QString& path, QSize size,
                   const std::function<void(QPainter&, QSize)>& paint, QString* error = nullptr);
+
+/// Writes `paint(painter, rect)` as <folder>/<name>.<format> for each of `formats`, at `size`,
+/// adding each file written to `written`. Returns false and sets `error` at the first failure.
+bool exportFigureFormats(const QString& folder, const QString& name, const QStringList& formats,
+                         QSize size, const std::function<void(QPainter&, const QRectF&)>& paint,
+                         QStringList& written, QString* error = nullptr);
+
+/// Creates `folder` (and its parents) for figures. Returns false and sets `error` when it cannot.
+bool makeFigureFolder(const QString& folder, QString* error = nullptr);
 
 /// The scene as shown (same zoom, scaled to `size`; the whole cell when the view follows it).
 bool exportScene(const SceneView& view, const QString& path, QSize size, QString* error = nullptr);
