@@ -47,6 +47,15 @@ struct HalfEdges {
 
 HalfEdges buildHalfEdges(const ContactNetwork& network, const std::vector<std::uint8_t>& inGraph) {
     HalfEdges he;
+    const auto count =
+        2 * static_cast<std::size_t>(std::count_if(inGraph.begin(), inGraph.end(),
+                                                   [](std::uint8_t k) { return k != 0; }));
+    for (auto* v : {&he.point1, &he.point2, &he.reach1, &he.reach2}) {
+        v->reserve(count);
+    }
+    for (auto* v : {&he.origin, &he.shift1, &he.shift2}) {
+        v->reserve(count);
+    }
     for (std::size_t c = 0; c < network.contacts.size(); ++c) {
         if (!inGraph[c]) {
             continue;

@@ -82,6 +82,31 @@ TEST(RunCost, SummedOverTheProcessesOfAResumedRunAndFinishedOnlyAtTheEnd) {
     EXPECT_GT(total.times.checkpoints, first.times.checkpoints);
 }
 
+TEST(RunCost, TheRunSaysWhereItsTimeWentAndCostJsonAgrees) {
+    const fs::path base = freshFolder("told");
+    const std::string out = (base / "run").string();
+    const test::CommandOutput r =
+        test::grainlabOutput(fmt::format("run {} --out {}", tinyExperiment(base).string(), out));
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::string line = "grainlab run: time in this process: stepping ";
+    const std::size_t at = r.output.find(line);
+    ASSERT_NE(at, std::string::npos) << r.output;
+    // The four parts' shares, as printed, add up to 100 %.
+    double shares = 0;
+    std::size_t from = at;
+    for (int part = 0; part < 4; ++part) {
+        const std::size_t open = r.output.find(" (", from), close = r.output.find(" %)", open);
+        ASSERT_NE(close, std::string::npos) << r.output.substr(at);
+        shares += std::stod(r.output.substr(open + 2, close - open - 2));
+        from = close;
+    }
+    EXPECT_NEAR(shares, 100.0, 0.25) << r.output.substr(at);
+    // One process: cost.json's seconds are the ones printed.
+    const RunnerTimes t = readRunCost(out).times;
+    EXPECT_NE(r.output.find(fmt::format("stepping {:.1f} s", t.stepping)), std::string::npos);
+    EXPECT_NE(r.output.find(fmt::format("records {:.1f} s", t.records)), std::string::npos);
+}
+
 TEST(RunCost, AFinishedRunWhoseRecordMissedTheEndIsMarkedFinishedOnResume) {
     const fs::path base = freshFolder("missed");
     const std::string out = (base / "run").string();
