@@ -23,6 +23,7 @@
 #include "grainlab/void_cells.h"
 #include "refusal.h"
 #include "scenes.h"
+#include "scratch_folder.h"
 
 namespace grainlab {
 namespace {
@@ -30,11 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-    const fs::path p =
-        fs::temp_directory_path() / ("grainlab_damage_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
+    return test::scratchFolder("damage", name);
 }
 
 std::string slurp(const fs::path& path) {

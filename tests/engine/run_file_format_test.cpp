@@ -15,6 +15,7 @@
 #include "grainlab/simulation.h"
 #include "grainlab/void_cells.h"
 #include "refusal.h"
+#include "scratch_folder.h"
 
 namespace grainlab {
 namespace {
@@ -24,11 +25,7 @@ namespace fs = std::filesystem;
 constexpr const char* kExperiment = "{\"name\": \"format\", \"seed\": 5}";
 
 fs::path scratch(const std::string& name) {
-    const fs::path p =
-        fs::temp_directory_path() / ("grainlab_format_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
+    return test::scratchFolder("format", name);
 }
 
 /// A run file with one series and one full checkpoint (contacts, void cells, outlines).
