@@ -79,18 +79,26 @@ std::vector<Result> cellResultsDone(const fs::path& dir, const std::vector<Cell>
     return results;
 }
 
+/// Draws the figures of the cells done with `figures` (when given and any cell is done); throws
+/// naming the `map` when that fails.
+template <class FigureWriter, class Spec, class Result>
+void drawFigures(const FigureWriter& figures, const fs::path& dir, const Spec& spec,
+                 const std::vector<Result>& results, const std::string& map) {
+    if (figures && !results.empty()) {
+        const std::string error = figures(dir.string(), spec, results);
+        if (!error.empty()) {
+            throw std::runtime_error("writing the " + map + " map's figures: " + error);
+        }
+    }
+}
+
 std::size_t collectTimeStep(const fs::path& dir, const StabilityMapSpec& spec, bool quiet,
                             const StabilityFigureWriter& figures) {
     const std::vector<StabilityCellResult> results =
         cellResultsDone(dir, stabilityCells(spec), parseCellResult);
     writeFileAtomically((dir / "limits.csv").string(), limitsCsv(results));
     writeFileAtomically((dir / "accuracy.csv").string(), accuracyCsv(results));
-    if (figures && !results.empty()) {
-        const std::string error = figures(dir.string(), spec, results);
-        if (!error.empty()) {
-            throw std::runtime_error("writing the stability map's figures: " + error);
-        }
-    }
+    drawFigures(figures, dir, spec, results, "stability");
     if (!quiet) {
         fmt::print("grainlab stability: {} of {} cells done; limits in {}\n", results.size(),
                    stabilityCells(spec).size(), (dir / "limits.csv").string());
@@ -104,12 +112,7 @@ std::size_t collectServo(const fs::path& dir, const ServoMapSpec& spec, bool qui
         cellResultsDone(dir, servoCells(spec), parseServoCellResult);
     writeFileAtomically((dir / "servo_limits.csv").string(), servoLimitsCsv(spec, results));
     writeFileAtomically((dir / "servo_runs.csv").string(), servoRunsCsv(results));
-    if (figures && !results.empty()) {
-        const std::string error = figures(dir.string(), spec, results);
-        if (!error.empty()) {
-            throw std::runtime_error("writing the servo map's figures: " + error);
-        }
-    }
+    drawFigures(figures, dir, spec, results, "servo");
     if (!quiet) {
         fmt::print("grainlab stability: {} of {} cells done; largest stable gains in {}\n",
                    results.size(), servoCells(spec).size(), (dir / "servo_limits.csv").string());

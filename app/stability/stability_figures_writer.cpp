@@ -15,34 +15,40 @@
 
 namespace grainlab {
 
-std::string writeStabilityFiguresHeadless(const std::string& folder, const StabilityMapSpec& spec,
-                                          const std::vector<StabilityCellResult>& results) {
+namespace {
+
+/// Calls `write(figures, &error)` for the folder <folder>/figures with a Qt application running
+/// (the offscreen one when none is); the error it sets, empty when none.
+template <class Write>
+std::string writeFiguresHeadless(const std::string& folder, Write write) {
     const auto app = ui::headlessApplicationIfNone();
     QString error;
-    const QString figures =
-        QString::fromStdString((std::filesystem::path(folder) / "figures").string());
-    ui::writeStabilityFigures(figures, spec, results, &error);
+    write(QString::fromStdString((std::filesystem::path(folder) / "figures").string()), &error);
     return error.toStdString();
+}
+
+} // namespace
+
+std::string writeStabilityFiguresHeadless(const std::string& folder, const StabilityMapSpec& spec,
+                                          const std::vector<StabilityCellResult>& results) {
+    return writeFiguresHeadless(folder, [&](const QString& figures, QString* error) {
+        ui::writeStabilityFigures(figures, spec, results, error);
+    });
 }
 
 std::string writeServoFiguresHeadless(const std::string& folder, const ServoMapSpec& spec,
                                       const std::vector<ServoCellResult>& results) {
-    const auto app = ui::headlessApplicationIfNone();
-    QString error;
-    ui::writeServoFigures(
-        QString::fromStdString((std::filesystem::path(folder) / "figures").string()), spec, results,
-        kMaxServoGain, &error);
-    return error.toStdString();
+    return writeFiguresHeadless(folder, [&](const QString& figures, QString* error) {
+        ui::writeServoFigures(figures, spec, results, kMaxServoGain, error);
+    });
 }
 
 std::string writeGeometryFiguresHeadless(const std::string& folder, const GeometryMapSpec& spec,
                                          const std::vector<GeometryLevel>& levels) {
-    const auto app = ui::headlessApplicationIfNone();
-    QString error;
-    ui::writeGeometryFigures(
-        QString::fromStdString((std::filesystem::path(folder) / "figures").string()), spec, levels,
-        StabilityParameters{}.maxOverlapFraction, &error);
-    return error.toStdString();
+    return writeFiguresHeadless(folder, [&](const QString& figures, QString* error) {
+        ui::writeGeometryFigures(figures, spec, levels, StabilityParameters{}.maxOverlapFraction,
+                                 error);
+    });
 }
 
 } // namespace grainlab

@@ -81,6 +81,12 @@ TEST(RunWarningsCommand, PrintedOnceAndKeptThroughAKillAndResume) {
     fs::remove_all(base);
 }
 
+/// Writes the experiment `j` to `experiment`, then runs `grainlab run` on it into `out`.
+CommandOutput runWritten(const nlohmann::json& j, const fs::path& experiment, const fs::path& out) {
+    std::ofstream(experiment) << j.dump(2);
+    return grainlabOutput(fmt::format("run {} --out {}", experiment.string(), out.string()));
+}
+
 TEST(RunWarningsCommand, AFailingRunNamesItsLastGoodCheckpoint) {
     const fs::path base = test::freshFolder("cli", "lastgood");
     nlohmann::json j = fastShear();
@@ -88,9 +94,7 @@ TEST(RunWarningsCommand, AFailingRunNamesItsLastGoodCheckpoint) {
     j["stability"]["max_overlap_fraction"] = 1e-4;
     j["record"]["snapshot_step_interval"] = 200;
     const fs::path experiment = base / "fail.json";
-    std::ofstream(experiment) << j.dump(2);
-    const CommandOutput out = grainlabOutput(
-        fmt::format("run {} --out {}", experiment.string(), (base / "out").string()));
+    const CommandOutput out = runWritten(j, experiment, base / "out");
     EXPECT_EQ(out.status, 1) << out.output;
     EXPECT_NE(out.output.find("overlap"), std::string::npos) << out.output;
     const std::vector<std::string> checkpoints =
@@ -112,9 +116,7 @@ TEST(RunWarningsCommand, AStageStepLimitNamesItsKeyAndSuggestsANewRun) {
     nlohmann::json j = fastShear();
     j["compaction"]["criterion"]["max_steps"] = 300; // no compaction is calm this soon
     const fs::path experiment = base / "limit.json";
-    std::ofstream(experiment) << j.dump(2);
-    const CommandOutput out = grainlabOutput(
-        fmt::format("run {} --out {}", experiment.string(), (base / "out").string()));
+    const CommandOutput out = runWritten(j, experiment, base / "out");
     EXPECT_EQ(out.status, 1) << out.output;
     EXPECT_NE(out.output.find("did not reach equilibrium"), std::string::npos) << out.output;
     EXPECT_NE(out.output.find("compaction.criterion.max_steps"), std::string::npos) << out.output;

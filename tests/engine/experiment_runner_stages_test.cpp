@@ -89,6 +89,17 @@ public:
         return r;
     }
 
+    /// The first checkpoint kept (in write order) that `pick` chooses; null when none is.
+    template <class Pick>
+    const Kept* firstKept(Pick pick) const {
+        for (const Kept& k : kept) {
+            if (pick(k)) {
+                return &k;
+            }
+        }
+        return nullptr;
+    }
+
     std::vector<SeriesTable> series;
     std::map<double, SimulationState> samples;
     std::vector<Kept> kept;
@@ -434,13 +445,10 @@ TEST(ExperimentRunnerStages, EveryTestKindResumesFromTheMiddleOfItsTestBitForBit
     ExperimentRunner unbroken(config, &out);
     runAll(unbroken);
     for (const std::string kind : {"constant_volume", "stress_path"}) {
-        const Kept* middle = nullptr;
-        for (const Kept& k : out.kept) {
-            if (!k.identity.peak && !k.runnerState.empty() && k.identity.kind == kind &&
-                k.identity.axialStrain > 0.0005 && !middle) {
-                middle = &k;
-            }
-        }
+        const Kept* middle = out.firstKept([&](const Kept& k) {
+            return !k.identity.peak && !k.runnerState.empty() && k.identity.kind == kind &&
+                   k.identity.axialStrain > 0.0005;
+        });
         ASSERT_NE(middle, nullptr) << kind;
         MemoryOutput again;
         ExperimentRunner resumed(config, out.resumeFrom(*middle), &again);
@@ -489,14 +497,11 @@ TEST(ExperimentRunnerStages, ACyclicTestFollowsItsWaveformAndMakesItsCycles) {
     }
 
     // Resumed from a checkpoint in the middle of a cycle (on the unloading leg), it ends the same.
-    const Kept* middle = nullptr;
-    for (const Kept& k : out.kept) {
-        if (!k.runnerState.empty() && k.identity.kind == "cyclic" &&
-            k.identity.axialStrain < 0.0009 && k.identity.axialStrain > -0.0009 &&
-            k.identity.step > start + 2000 && !middle) {
-            middle = &k;
-        }
-    }
+    const Kept* middle = out.firstKept([&](const Kept& k) {
+        return !k.runnerState.empty() && k.identity.kind == "cyclic" &&
+               k.identity.axialStrain < 0.0009 && k.identity.axialStrain > -0.0009 &&
+               k.identity.step > start + 2000;
+    });
     ASSERT_NE(middle, nullptr);
     MemoryOutput again;
     ExperimentRunner resumed(config, out.resumeFrom(*middle), &again);
@@ -734,13 +739,10 @@ TEST(ExperimentRunnerStages, AStressControlledCyclicTestReversesWithinOneRecordO
         EXPECT_NE(w.kind, "test_end") << w.text;
     }
     // Resumed from a checkpoint after its first reversal, it ends the same.
-    const Kept* middle = nullptr;
-    for (const Kept& k : out.kept) {
-        if (k.identity.kind == "cyclic" && !k.runnerState.empty() &&
-            parseRunnerState(k.runnerState).cyclicReversals == 1 && !middle) {
-            middle = &k;
-        }
-    }
+    const Kept* middle = out.firstKept([&](const Kept& k) {
+        return k.identity.kind == "cyclic" && !k.runnerState.empty() &&
+               parseRunnerState(k.runnerState).cyclicReversals == 1;
+    });
     ASSERT_NE(middle, nullptr);
     MemoryOutput again;
     ExperimentRunner resumed(config, out.resumeFrom(*middle), &again);

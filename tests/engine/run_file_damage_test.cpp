@@ -21,7 +21,9 @@
 #include "grainlab/run_file.h"
 #include "grainlab/simulation.h"
 #include "grainlab/void_cells.h"
+#include "refusal.h"
 #include "scenes.h"
+#include "scratch_folder.h"
 
 namespace grainlab {
 namespace {
@@ -29,11 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-    const fs::path p =
-        fs::temp_directory_path() / ("grainlab_damage_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
+    return test::scratchFolder("damage", name);
 }
 
 std::string slurp(const fs::path& path) {
@@ -141,15 +139,9 @@ TEST(RunFileDamage, DamagedDataIsRefusedNamingTheDataset) {
     std::string bytes = slurp(path);
     bytes[offset] = static_cast<char>(bytes[offset] ^ 1);
     std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-    try {
-        readState(path, checkpointGroup("000001-shear-15-kPa-step600"));
-        FAIL() << "a damaged dataset was read";
-    } catch (const std::runtime_error& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find(path), std::string::npos) << what;
-        EXPECT_NE(what.find("grains/x1"), std::string::npos) << what;
-        EXPECT_NE(what.find("damaged"), std::string::npos) << what;
-    }
+    ASSERT_NO_FATAL_FAILURE(test::expectRefusedNaming(
+        [&] { readState(path, checkpointGroup("000001-shear-15-kPa-step600")); },
+        {path, "grains/x1", "damaged"}, "a damaged dataset was read"));
     fs::remove_all(dir);
 }
 
@@ -167,14 +159,8 @@ TEST(RunFileDamage, OtherVersionsAndOtherFilesAreRefusedByName) {
     for (const auto& read : {+[](const std::string& p) { listCheckpoints(p); },
                              +[](const std::string& p) { readExperimentText(p); },
                              +[](const std::string& p) { listTests(p); }}) {
-        try {
-            read(path);
-            FAIL() << "a version 1 file was read";
-        } catch (const std::runtime_error& e) {
-            const std::string what = e.what();
-            EXPECT_NE(what.find(path), std::string::npos) << what;
-            EXPECT_NE(what.find("version 1"), std::string::npos) << what;
-        }
+        ASSERT_NO_FATAL_FAILURE(test::expectRefusedNaming([&] { read(path); }, {path, "version 1"},
+                                                          "a version 1 file was read"));
     }
     EXPECT_THROW(RunFile(path, "{\"name\": \"damage\", \"seed\": 5}", RunFile::Mode::Resume),
                  std::runtime_error);
@@ -184,12 +170,7 @@ TEST(RunFileDamage, OtherVersionsAndOtherFilesAreRefusedByName) {
     const std::string other = (dir / "other.h5").string();
     H5::H5File(other, H5F_ACC_TRUNC).close();
     for (const std::string& p : {text, other}) {
-        try {
-            listCheckpoints(p);
-            FAIL() << p;
-        } catch (const std::runtime_error& e) {
-            EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << e.what();
-        }
+        ASSERT_NO_FATAL_FAILURE(test::expectRefusedNaming([&] { listCheckpoints(p); }, {p}, p));
     }
     fs::remove_all(dir);
 }

@@ -14,6 +14,8 @@
 #include "grainlab/scenes/compacted_scene.h"
 #include "grainlab/simulation.h"
 #include "grainlab/void_cells.h"
+#include "refusal.h"
+#include "scratch_folder.h"
 
 namespace grainlab {
 namespace {
@@ -23,11 +25,7 @@ namespace fs = std::filesystem;
 constexpr const char* kExperiment = "{\"name\": \"format\", \"seed\": 5}";
 
 fs::path scratch(const std::string& name) {
-    const fs::path p =
-        fs::temp_directory_path() / ("grainlab_format_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
+    return test::scratchFolder("format", name);
 }
 
 /// A run file with one series and one full checkpoint (contacts, void cells, outlines).
@@ -108,15 +106,9 @@ TEST(RunFileFormat, FormatTwoFilesStillRead) {
     EXPECT_TRUE(v.vertices1.empty());
     EXPECT_TRUE(v.secondMoment11.empty());
     // Not continued: its checkpoints have no running peak of q/p to continue.
-    try {
-        RunFile file(path, kExperiment, RunFile::Mode::Resume);
-        FAIL() << "a format 2 file was continued";
-    } catch (const std::runtime_error& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find(path), std::string::npos) << what;
-        EXPECT_NE(what.find("version 2"), std::string::npos) << what;
-        EXPECT_NE(what.find("continues version 3 only"), std::string::npos) << what;
-    }
+    ASSERT_NO_FATAL_FAILURE(test::expectRefusedNaming(
+        [&] { RunFile file(path, kExperiment, RunFile::Mode::Resume); },
+        {path, "version 2", "continues version 3 only"}, "a format 2 file was continued"));
     fs::remove_all(dir);
 }
 
@@ -128,14 +120,9 @@ TEST(RunFileFormat, NewerFormatsAreRefusedByName) {
         H5::H5File file(path, H5F_ACC_RDWR);
         setVersion(file, 4);
     }
-    try {
-        listCheckpointInfo(path);
-        FAIL() << "a format 4 file was read";
-    } catch (const std::runtime_error& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find("version 4"), std::string::npos) << what;
-        EXPECT_NE(what.find("reads versions 2 to 3"), std::string::npos) << what;
-    }
+    ASSERT_NO_FATAL_FAILURE(test::expectRefusedNaming([&] { listCheckpointInfo(path); },
+                                                      {"version 4", "reads versions 2 to 3"},
+                                                      "a format 4 file was read"));
     fs::remove_all(dir);
 }
 

@@ -37,6 +37,15 @@ StudyPlan threeSettings() {
     return plan;
 }
 
+/// A study decided by the peak of q/p alone, within `tolerance` (a fraction of the reference
+/// mean when `relative`).
+StudySpec decidedByPeak(double tolerance, bool relative) {
+    StudySpec spec;
+    spec.tolerances["peak_q_over_p"] = {tolerance, relative};
+    spec.deciding = {"peak_q_over_p"};
+    return spec;
+}
+
 RunResult result(int run, double peak, double cpu) {
     RunResult r;
     r.run = run;
@@ -55,9 +64,7 @@ const MetricSummary& metric(const SettingSummary& s, const std::string& name) {
 }
 
 TEST(StudySummary, ErrorsNoiseTolerancesAndTheCheapestValidSetting) {
-    StudySpec spec;
-    spec.tolerances["peak_q_over_p"] = {0.05, true}; // 5 % of the reference mean
-    spec.deciding = {"peak_q_over_p"};
+    const StudySpec spec = decidedByPeak(0.05, true); // 5 % of the reference mean
     const StudyPlan plan = threeSettings();
     // ref: 0.50, 0.52; a: 0.51, 0.53 (+0.01, in the noise); b: 0.60, 0.62 (+0.10, out).
     const std::vector<RunResult> results{result(0, 0.50, 10), result(1, 0.52, 12),
@@ -110,9 +117,7 @@ TEST(StudySummary, ErrorsNoiseTolerancesAndTheCheapestValidSetting) {
 }
 
 TEST(StudySummary, ASettingThatWidensTheSeedScatterBeyondTheToleranceIsNotValid) {
-    StudySpec spec;
-    spec.tolerances["peak_q_over_p"] = {0.05, true}; // 0.0255 of the reference mean 0.51
-    spec.deciding = {"peak_q_over_p"};
+    const StudySpec spec = decidedByPeak(0.05, true); // 0.0255 of the reference mean 0.51
     const StudyPlan plan = threeSettings();
     // ref: 0.50, 0.52 (sd 0.0141); a: 0.47, 0.55 (the same mean, sd 0.0566: one run of a may
     // miss the reference by far more than the tolerance); b: 0.52, 0.54 (+0.02, sd as ref's).
@@ -132,9 +137,7 @@ TEST(StudySummary, ASettingThatWidensTheSeedScatterBeyondTheToleranceIsNotValid)
 }
 
 TEST(StudySummary, ASettingWithoutResultsIsNotValidAndTheCostMeasureIsChosen) {
-    StudySpec spec;
-    spec.tolerances["peak_q_over_p"] = {0.5, false};
-    spec.deciding = {"peak_q_over_p"};
+    const StudySpec spec = decidedByPeak(0.5, false);
     const StudyPlan plan = threeSettings();
     const std::vector<RunResult> results{result(0, 0.50, 10), result(1, 0.52, 12),
                                          result(2, 0.51, 5)};

@@ -17,9 +17,7 @@
 namespace grainlab::ui {
 namespace {
 
-using window_tests::click;
-using window_tests::smallExperiment;
-using window_tests::waitFor;
+using namespace window_tests;
 
 /// The experiment run, slowed down while `slow` (a pause before each short advance) so that its
 /// compaction lasts long enough to be looked at.
@@ -62,9 +60,7 @@ TEST(CompactionView, ChartsTheCompactionWithProgressAndAnEta) {
     MainWindow w([slow](const ExperimentConfig& c) {
         return std::make_unique<SlowRun>(makeExperimentRun(c), slow);
     });
-    w.setExperiment(config);
-    w.resize(1400, 900);
-    w.show();
+    showWith(w, config);
     ChartsPanel* charts = w.chartsPanel();
     const int p = chartIndex(*charts, QStringLiteral("compaction_p"));
     const int e = chartIndex(*charts, QStringLiteral("compaction_e"));

@@ -23,9 +23,7 @@
 namespace grainlab::ui {
 namespace {
 
-using window_tests::click;
-using window_tests::smallExperiment;
-using window_tests::waitFor;
+using namespace window_tests;
 
 /// A CSV file's rows of cells (quoted cells unquoted).
 std::vector<std::vector<std::string>> readCsv(const QString& path) {
@@ -94,9 +92,7 @@ TEST(FigureSet, HoldsTheReportsFiguresOfTheRunAndOfAnOpenRunFile) {
 
     MainWindow w;
     w.setGrainlabExecutable(QStringLiteral(GRAINLAB_EXE));
-    w.setExperiment(smallExperiment(0.01));
-    w.resize(1400, 900);
-    w.show();
+    showWith(w, smallExperiment(0.01));
     QSignalSpy written(&w, &MainWindow::figureSetWritten);
 
     // While the run is going: the scene, the charts and the series as far as it got, and a

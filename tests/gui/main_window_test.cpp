@@ -36,17 +36,11 @@
 namespace grainlab::ui {
 namespace {
 
-using window_tests::click;
-using window_tests::smallExperiment;
-using window_tests::waitFor;
+using namespace window_tests;
 
 struct Fixture {
     MainWindow window;
-    Fixture() {
-        window.setExperiment(smallExperiment());
-        window.resize(1400, 900);
-        window.show();
-    }
+    Fixture() { showWith(window, smallExperiment()); }
     RunState state() { return window.controller().status().state; }
     SnapshotPtr shown() { return window.sceneView()->snapshot(); }
 };
@@ -290,9 +284,7 @@ TEST(MainWindow, RunsToTheEndAndWritesScreenshots) {
 TEST(MainWindow, HoveringAChartShowsTheLiveRunsKeptSnapshotUntilTheHoverEnds) {
     const ExperimentConfig config = smallExperiment(0.02); // long enough to pause during the shear
     MainWindow w;
-    w.setExperiment(config);
-    w.resize(1400, 900);
-    w.show();
+    showWith(w, config);
     click(w, w.startAction());
     // Some records into the shear (one every 0.02 %): the history keeps a snapshot of each one,
     // or of every n-th when they cost the engine too much.

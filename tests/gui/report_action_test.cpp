@@ -15,9 +15,7 @@
 namespace grainlab::ui {
 namespace {
 
-using window_tests::click;
-using window_tests::smallExperiment;
-using window_tests::waitFor;
+using namespace window_tests;
 
 class UrlCatcher : public QObject {
     Q_OBJECT
@@ -36,9 +34,7 @@ TEST(ReportAction, WritesTheRunsReportAndOpensIt) {
 
     MainWindow w;
     w.setGrainlabExecutable(QStringLiteral(GRAINLAB_EXE));
-    w.setExperiment(smallExperiment(0.01));
-    w.resize(1400, 900);
-    w.show();
+    showWith(w, smallExperiment(0.01));
     w.writeReport(); // no run yet
     EXPECT_TRUE(catcher.opened.isEmpty());
 

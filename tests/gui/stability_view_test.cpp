@@ -113,6 +113,16 @@ bool waitForCells(const StabilityView& v, int cells) {
         30000);
 }
 
+/// Shows `v` at 1100 x 650 and opens the map folder `folder`, waiting until `cells` of its cells
+/// are shown done. Call it within ASSERT_NO_FATAL_FAILURE.
+void showMapFolder(StabilityView& v, const QString& folder, int cells) {
+    v.resize(1100, 650);
+    v.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&v));
+    v.setMapFolder(folder);
+    ASSERT_TRUE(waitForCells(v, cells));
+}
+
 QString number(double v) {
     return QString::number(v, 'g', 4);
 }
@@ -133,11 +143,7 @@ TEST(StabilityView, PaintsEachSquareInTheColourOfItsCellsLimit) {
     const std::vector<CellJson> cells = readCells(folder);
     ASSERT_EQ(cells.size(), 4u);
     StabilityView v(nullptr, kExe);
-    v.resize(1100, 650);
-    v.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&v));
-    v.setMapFolder(folder);
-    ASSERT_TRUE(waitForCells(v, 4));
+    ASSERT_NO_FATAL_FAILURE(showMapFolder(v, folder, 4));
     EXPECT_EQ(v.preset(), QString()); // Start would continue the folder's own map
     EXPECT_EQ(v.progressBar()->value(), 4);
     EXPECT_EQ(v.progressBar()->maximum(), 4);
@@ -236,11 +242,7 @@ TEST(StabilityView, HoveringOrClickingASquareShowsItsCellsNumbers) {
     const QString folder = tinyMap();
     const std::vector<CellJson> cells = readCells(folder);
     StabilityView v(nullptr, kExe);
-    v.resize(1100, 650);
-    v.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&v));
-    v.setMapFolder(folder);
-    ASSERT_TRUE(waitForCells(v, 4));
+    ASSERT_NO_FATAL_FAILURE(showMapFolder(v, folder, 4));
     QTest::qWait(20);
     for (const CellJson& c : cells) {
         const QPoint s = squareOf(c);
@@ -382,11 +384,7 @@ TEST(StabilityView, APartialMapContinuesOnStartAndFillsIn) {
 
     StabilityView v(nullptr, kExe);
     v.setPollInterval(100);
-    v.resize(1100, 650);
-    v.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&v));
-    v.setMapFolder(folder);
-    ASSERT_TRUE(waitForCells(v, 2));
+    ASSERT_NO_FATAL_FAILURE(showMapFolder(v, folder, 2));
     EXPECT_EQ(v.preset(), QString());
     EXPECT_EQ(v.progressBar()->value(), 2);
     QTest::qWait(20);

@@ -25,9 +25,7 @@
 namespace grainlab::ui {
 namespace {
 
-using window_tests::click;
-using window_tests::smallExperiment;
-using window_tests::waitFor;
+using namespace window_tests;
 
 /// Pixels that differ between two images of the same size.
 int differingPixels(const QImage& a, const QImage& b) {
@@ -74,9 +72,7 @@ TEST(WindowPictures, GrainlabPictureShareReplacesTheRuleAndNonsenseIsRefused) {
 TEST(WindowPictures, NewPicturesKeepComingWhileRunningWithForceChainsAndVoidCells) {
     const ExperimentConfig config = smallExperiment(0.3); // runs for a while
     MainWindow w;
-    w.setExperiment(config);
-    w.resize(1400, 900);
-    w.show();
+    showWith(w, config);
     w.sceneOptionsBar()->forceChainsBox()->setCurrentIndex(int(ForceChains::Strong));
     w.sceneOptionsBar()->voidCellsBox()->setCurrentIndex(int(VoidCellShading::Valence));
     const std::uint64_t paints = w.sceneView()->drawingTime().paints;
@@ -118,9 +114,7 @@ TEST(WindowPictures, NewPicturesKeepComingWhileRunningWithForceChainsAndVoidCell
 
 TEST(WindowPictures, ABindingBudgetSpacesRunningPicturesButZoomAndPauseShowAtOnce) {
     MainWindow w;
-    w.setExperiment(smallExperiment(0.3)); // outlasts the 3 s below
-    w.resize(1400, 900);
-    w.show();
+    showWith(w, smallExperiment(0.3)); // outlasts the 3 s below
     // 1.5 % of a core: even this small scene's pictures (copy, measures, preparation and paint:
     // about 3 ms here) are about 200 ms apart.
     w.setPictureShare(0.015);
@@ -186,9 +180,7 @@ TEST(WindowPictures, ABindingBudgetSpacesRunningPicturesButZoomAndPauseShowAtOnc
 
 TEST(WindowPictures, APicturePublishedBeforeTheBudgetAllowsWaitsForIt) {
     MainWindow w;
-    w.setExperiment(smallExperiment(0.3));
-    w.resize(1400, 900);
-    w.show();
+    showWith(w, smallExperiment(0.3));
     click(w, w.startAction());
     ASSERT_TRUE(waitFor([&] { return stillRunning(w) && w.sceneView()->snapshot(); }));
     // Just after a new picture at the run's own pace...

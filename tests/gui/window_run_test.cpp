@@ -33,11 +33,7 @@
 namespace grainlab::ui {
 namespace {
 
-using window_tests::click;
-using window_tests::freshFolder;
-using window_tests::freshRunsFolder;
-using window_tests::smallExperiment;
-using window_tests::waitFor;
+using namespace window_tests;
 
 QStringList runFolders(const QString& runs) {
     return QDir(runs).entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name);
@@ -86,9 +82,7 @@ TEST(WindowRun, IsRecordedInANewRunFolderWithTheEditedExperiment) {
     // window too, where it finds no run folder.
     const QString runs = freshRunsFolder(QStringLiteral("recorded"));
     MainWindow w;
-    w.setExperiment(smallExperiment());
-    w.resize(1400, 900);
-    w.show();
+    showWith(w, smallExperiment());
     w.parametersPanel()->frictionEdit()->setValue(0.3);
     w.parametersPanel()->strainTargetEdit()->setValue(0.4);
     click(w, w.startAction());
@@ -239,9 +233,7 @@ TEST(WindowRun, AConstantVolumeTestChosenInTheParametersRunsAndDrawsItsStressPat
     const QString runs = freshFolder(QStringLiteral("constant-volume"));
     MainWindow w;
     w.setRunsFolder(runs);
-    w.setExperiment(smallExperiment(0.004));
-    w.resize(1400, 900);
-    w.show();
+    showWith(w, smallExperiment(0.004));
     ParametersPanel* p = w.parametersPanel();
     // The slope is for a stress path only.
     EXPECT_FALSE(p->pathSlopeEdit()->isEnabled());
@@ -310,11 +302,10 @@ TEST(WindowRun, ACyclicTestRunsAndDrawsItsLoopsLiveCycleAndPressurePerCycle) {
     const QString runs = freshFolder(QStringLiteral("cyclic"));
     MainWindow w;
     w.setRunsFolder(runs);
-    w.setExperiment(smallExperiment(
-        0.005,
-        {{"kind", "cyclic"}, {"drainage", "constant_volume"}, {"amplitude", 1e-3}, {"cycles", 3}}));
-    w.resize(1400, 900);
-    w.show();
+    showWith(w, smallExperiment(0.005, {{"kind", "cyclic"},
+                                        {"drainage", "constant_volume"},
+                                        {"amplitude", 1e-3},
+                                        {"cycles", 3}}));
     click(w, w.startAction());
     ASSERT_TRUE(waitFor([&] { return state(w) == RunState::Finished; }, 180000))
         << w.controller().status().error;

@@ -62,6 +62,13 @@ bool waitFor(Predicate done, int timeoutMs = 60000) {
     return true;
 }
 
+/// Gives the window `experiment` and shows it at 1400 x 900, the size the window tests see it at.
+inline void showWith(MainWindow& w, const ExperimentConfig& experiment) {
+    w.setExperiment(experiment);
+    w.resize(1400, 900);
+    w.show();
+}
+
 /// Clicks the toolbar button of an action, like a user.
 inline void click(MainWindow& w, QAction* action) {
     QToolBar* bar = w.findChild<QToolBar*>(QStringLiteral("runToolBar"));

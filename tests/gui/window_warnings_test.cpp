@@ -15,10 +15,7 @@
 namespace grainlab::ui {
 namespace {
 
-using window_tests::click;
-using window_tests::freshRunsFolder;
-using window_tests::smallExperiment;
-using window_tests::waitFor;
+using namespace window_tests;
 
 /// The small experiment sheared at twice the quasi-static inertial number.
 ExperimentConfig fastExperiment() {
@@ -34,9 +31,7 @@ ExperimentConfig fastExperiment() {
 TEST(WindowWarnings, AFastShearIsWarnedAboutInTheStatusBarAndTheRunFileHasTheSame) {
     const QString runs = freshRunsFolder(QStringLiteral("warnings"));
     MainWindow w;
-    w.setExperiment(fastExperiment());
-    w.resize(1400, 900);
-    w.show();
+    showWith(w, fastExperiment());
     WarningLabel* label = w.warningLabel();
     ASSERT_NE(label, nullptr);
     EXPECT_FALSE(label->isVisible()); // nothing to warn about before the run

@@ -48,19 +48,16 @@ PlotPainter geometryDeparturePlot(const GeometryMapSpec& spec,
         }
     }
     const double left = spec.overlaps.front(), right = spec.overlaps.back();
-    PlotCurve tolerance;
-    tolerance.x = {left, right};
-    tolerance.y = {spec.tolerance, spec.tolerance};
-    tolerance.label = QObject::tr("departure tolerance %1 W").arg(spec.tolerance);
-    tolerance.colour = QColor(90, 90, 90);
-    plot.curves.push_back(tolerance);
-    PlotCurve guardLine;
-    guardLine.x = {guard, guard};
-    guardLine.y = {kGeometryDepartureFloor, top};
-    guardLine.label = QObject::tr("overlap guard, stability.max_overlap_fraction = %1").arg(guard);
-    guardLine.colour = QColor(0, 0, 0);
-    guardLine.width = 2.5;
-    plot.curves.push_back(guardLine);
+    plot.curves.push_back({.x = {left, right},
+                           .y = {spec.tolerance, spec.tolerance},
+                           .label = QObject::tr("departure tolerance %1 W").arg(spec.tolerance),
+                           .colour = QColor(90, 90, 90)});
+    plot.curves.push_back(
+        {.x = {guard, guard},
+         .y = {kGeometryDepartureFloor, top},
+         .label = QObject::tr("overlap guard, stability.max_overlap_fraction = %1").arg(guard),
+         .colour = QColor(0, 0, 0),
+         .width = 2.5});
     return plot;
 }
 

@@ -99,14 +99,12 @@ PlotPainter servoStableGainPlot(const std::vector<ServoCellResult>& results, dou
         }
         plot.curves.push_back(std::move(curve));
     }
-    PlotCurve bound;
-    bound.x = {1, largestInterval};
-    bound.y = {gainBound, gainBound};
-    bound.label = QObject::tr("the experiment file's bound, servo.gain ≤ %1")
-                      .arg(QString::number(gainBound, 'g', 3));
-    bound.colour = QColor(0, 0, 0);
-    bound.width = 2.5;
-    plot.curves.push_back(bound);
+    plot.curves.push_back({.x = {1, largestInterval},
+                           .y = {gainBound, gainBound},
+                           .label = QObject::tr("the experiment file's bound, servo.gain ≤ %1")
+                                        .arg(QString::number(gainBound, 'g', 3)),
+                           .colour = QColor(0, 0, 0),
+                           .width = 2.5});
     return plot;
 }
 
