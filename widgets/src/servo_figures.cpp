@@ -101,6 +101,7 @@ PlotPainter servoStableGainPlot(const std::vector<ServoCellResult>& results, dou
     }
     plot.curves.push_back({.x = {1, largestInterval},
                            .y = {gainBound, gainBound},
+                           .band = {},
                            .label = QObject::tr("the experiment file's bound, servo.gain ≤ %1")
                                         .arg(QString::number(gainBound, 'g', 3)),
                            .colour = QColor(0, 0, 0),
