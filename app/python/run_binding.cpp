@@ -278,6 +278,19 @@ finished). A callback returning False stops the run (in a run folder: a checkpoi
             "progress", [](PyRunner& r) { return progressDict(r.runner().progress()); },
             "Where the run is: stage, kind, test, pressure, step, axial_strain, fraction.")
         .def_property_readonly("steps_taken", [](PyRunner& r) { return r.runner().stepsTaken(); })
+        .def_property_readonly(
+            "times",
+            [](PyRunner& r) {
+                const RunnerTimes t = r.runner().times();
+                py::dict d;
+                d["stepping"] = t.stepping;
+                d["records"] = t.records;
+                d["checkpoints"] = t.checkpoints;
+                d["events"] = t.events;
+                return d;
+            },
+            "Where this runner's wall time has gone [s]: stepping, records, checkpoints and the "
+            "stages' other events (as cost.json's seconds).")
         .def(
             "measures", [](PyRunner& r) { return rowDict(r.runner().measuresNow()); },
             "Every numeric column of a series row for now, exactly as a record made now would "

@@ -86,6 +86,11 @@ def test_in_memory_runner_writes_nothing(small, tmp_path):
     runner = grainlab.Runner(small)
     runner.advance(100)
     assert runner.folder == ""
+    # Its time went into stepping (and the first record); no checkpoint was written.
+    times = runner.times
+    assert set(times) == {"stepping", "records", "checkpoints", "events"}
+    assert times["stepping"] > 0 and times["records"] > 0
+    assert times["checkpoints"] == 0
     with pytest.raises(grainlab.GrainLabError, match="in memory"):
         runner.checkpoint("x")
     with pytest.raises(ValueError):
