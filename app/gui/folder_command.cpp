@@ -113,6 +113,15 @@ FolderCommand::~FolderCommand() {
     QObject::disconnect(command_, nullptr, view_, nullptr);
 }
 
+void FolderCommand::newFolder() {
+    scans.forget();
+    lastExit.reset();
+    hooks_.redraw();
+    hooks_.updateProgress();
+    hooks_.updateControls();
+    hooks_.rescan();
+}
+
 void FolderCommand::setHooks(FolderCommandHooks hooks) {
     hooks_ = std::move(hooks);
     QObject::connect(&poll, &QTimer::timeout, view_, [this] {
@@ -135,6 +144,19 @@ FolderCommandView::FolderWidgets FolderCommandView::makeFolderWidgets(const QStr
     w.hint->setWordWrap(true);
     w.hint->setStyleSheet(QStringLiteral("color: gray"));
     return w;
+}
+
+QHBoxLayout* FolderCommandView::plotWithDetails(QWidget* plot, QLabel*& details,
+                                                const QString& text, int width) {
+    details = new QLabel(text);
+    details->setWordWrap(true);
+    details->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    details->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    details->setFixedWidth(width);
+    auto* row = new QHBoxLayout;
+    row->addWidget(plot, 1);
+    row->addWidget(details);
+    return row;
 }
 
 void FolderCommand::say(const QString& text) {

@@ -141,6 +141,7 @@ struct FolderCommandHooks {
     std::function<void()> updateProgress; ///< the row's progress (CommandRow::show)
     std::function<QString()> said;        ///< what the ended command said (its log read)
     std::function<void(int)> ended;       ///< the command ended with this exit status
+    std::function<void()> redraw;         ///< draw what the view holds of its folder
 };
 
 /// One folder command of a view: its process (output into a log file, so it goes on when the
@@ -156,6 +157,10 @@ public:
     FolderCommand& operator=(const FolderCommand&) = delete;
     /// The hooks; the buttons and the timer call them from now on.
     void setHooks(FolderCommandHooks hooks);
+    /// The view has a new folder (and has dropped what it held of the old one): the scans and
+    /// the exit status of the old folder are dropped, then the view redraws, shows its progress
+    /// and controls, and reads the new folder.
+    void newFolder();
 
     QString grainlab; ///< the executable started (tests give the built grainlab)
     CommandRow row;
@@ -220,6 +225,9 @@ protected:
         QLabel* hint;
     };
     FolderWidgets makeFolderWidgets(const QString& buttonText, const QString& hint);
+    /// The row of the view's plot (taking the room) and, beside it, its details panel, made here
+    /// into `details`: wrapped, selectable text, `width` px wide, showing `text` to start with.
+    QHBoxLayout* plotWithDetails(QWidget* plot, QLabel*& details, const QString& text, int width);
 
     /// Reads the folder with `scan` on the worker thread, then hands the result to `scanned`;
     /// a scan that threw puts its message in the status line.

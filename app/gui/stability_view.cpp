@@ -90,7 +90,7 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
     run_.setHooks({[this](QString* error) { return start(error); }, [this] { rescan(); },
                    [this] { updateControls(); }, [this] { updateProgressText(); },
                    [this] { return stabilityLogSummary(run_.logPath()); },
-                   [this](int exitStatus) { emit mapEnded(exitStatus); }});
+                   [this](int exitStatus) { emit mapEnded(exitStatus); }, [this] { redraw(); }});
 
     preset_ = new QComboBox;
     preset_->setToolTip(tr("The map Start runs into the folder"));
@@ -164,14 +164,7 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
         heatMap_->setSelectedCell(square);
         showSquare(square);
     });
-    details_ = new QLabel;
-    details_->setWordWrap(true);
-    details_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    details_->setFixedWidth(320);
-    auto* centre = new QHBoxLayout;
-    centre->addWidget(heatMap_, 1);
-    centre->addWidget(details_);
+    auto* centre = plotWithDetails(heatMap_, details_, {}, 320);
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(files);
@@ -291,17 +284,12 @@ void StabilityView::setMapFolder(const QString& folder) {
 void StabilityView::followFolder(const QString& folder, bool adoptItsMap) {
     folder_ = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
     folderLabel_->setText(folder_);
-    run_.scans.forget();
     state_.reset();
-    run_.lastExit.reset();
     adoptFolderMap_ = adoptItsMap;
     selected_ = kNoSquare;
     heatMap_->setSelectedCell(kNoSquare);
     run_.status->clear();
-    redraw();
-    updateProgressText();
-    updateControls();
-    rescan();
+    run_.newFolder();
 }
 
 bool StabilityView::start(QString* error) {

@@ -73,7 +73,7 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     run_.setHooks({[this](QString* error) { return start(error); }, [this] { rescan(); },
                    [this] { updateControls(); }, [this] { updateProgressText(); },
                    [this] { return logTail(); },
-                   [this](int exitStatus) { emit studyEnded(exitStatus); }});
+                   [this](int exitStatus) { emit studyEnded(exitStatus); }, [this] { redraw(); }});
 
     fileLabel_ = new QLabel(tr("no study open"));
     fileLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -122,14 +122,8 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
                           "run in the main window"));
     connect(chart_, &PlotView::pointHovered, this, &StudyWindow::showPoint);
     connect(chart_, &PlotView::pointClicked, this, &StudyWindow::clickPoint);
-    details_ = new QLabel(tr("Hover a point for its setting and numbers."));
-    details_->setWordWrap(true);
-    details_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    details_->setFixedWidth(300);
-    auto* centre = new QHBoxLayout;
-    centre->addWidget(chart_, 1);
-    centre->addWidget(details_);
+    auto* centre =
+        plotWithDetails(chart_, details_, tr("Hover a point for its setting and numbers."), 300);
 
     auto* studyTab = new QWidget;
     auto* layout = new QVBoxLayout(studyTab);
@@ -222,13 +216,8 @@ void StudyWindow::setStudyFolder(const QString& folder) {
     }
     folder_ = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
     folderLabel_->setText(folder_);
-    run_.scans.forget();
     progress_.reset();
-    run_.lastExit.reset();
-    redraw();
-    updateProgressText();
-    updateControls();
-    rescan();
+    run_.newFolder();
 }
 
 bool StudyWindow::start(QString* error) {
