@@ -4,6 +4,9 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -137,25 +140,54 @@ void FolderCommand::setHooks(FolderCommandHooks hooks) {
     QObject::connect(row.stop, &QPushButton::clicked, view_, [this] { stop(); });
 }
 
-FolderCommandView::FolderWidgets FolderCommandView::makeFolderWidgets(const QString& buttonText,
-                                                                      const QString& hint) {
-    FolderWidgets w{new QLabel(QObject::tr("–")), new QPushButton(buttonText), new QLabel(hint)};
-    w.label->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    w.hint->setWordWrap(true);
-    w.hint->setStyleSheet(QStringLiteral("color: gray"));
-    return w;
+void FolderCommandView::addFolderRows(QGridLayout* grid, const FolderRowTexts& texts, int span,
+                                      std::function<void(const QString&)> chosen) {
+    folderLabel_ = new QLabel(QObject::tr("–"));
+    folderLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    folderButton_ = new QPushButton(texts.button);
+    QObject::connect(folderButton_, &QPushButton::clicked, this,
+                     [this, title = texts.dialogTitle, chosen = std::move(chosen)] {
+                         const QString folder =
+                             QFileDialog::getExistingDirectory(this, title, folder_);
+                         if (!folder.isEmpty()) {
+                             chosen(folder);
+                         }
+                     });
+    auto* hint = new QLabel(texts.hint);
+    hint->setWordWrap(true);
+    hint->setStyleSheet(QStringLiteral("color: gray"));
+    grid->addWidget(new QLabel(texts.name), 1, 0);
+    grid->addWidget(folderLabel_, 1, 1, 1, span);
+    grid->addWidget(folderButton_, 1, 1 + span);
+    grid->addWidget(hint, 2, 1, 1, span + 1);
+    grid->setColumnStretch(span, 1);
 }
 
-QHBoxLayout* FolderCommandView::plotWithDetails(QWidget* plot, QLabel*& details,
-                                                const QString& text, int width) {
-    details = new QLabel(text);
-    details->setWordWrap(true);
-    details->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    details->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    details->setFixedWidth(width);
+void FolderCommandView::showFolder(const QString& folder) {
+    folder_ = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
+    folderLabel_->setText(folder_);
+}
+
+QHBoxLayout* FolderCommandView::plotWithDetails(QWidget* plot, const QString& text, int width) {
+    details_ = new QLabel(text);
+    details_->setWordWrap(true);
+    details_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    details_->setFixedWidth(width);
     auto* row = new QHBoxLayout;
     row->addWidget(plot, 1);
-    row->addWidget(details);
+    row->addWidget(details_);
+    return row;
+}
+
+QHBoxLayout*
+FolderCommandView::choicesRow(std::initializer_list<std::pair<QString, QWidget*>> choices) {
+    auto* row = new QHBoxLayout;
+    for (const auto& [label, box] : choices) {
+        row->addWidget(new QLabel(label));
+        row->addWidget(box);
+    }
+    row->addStretch(1);
     return row;
 }
 

@@ -8,8 +8,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include <QElapsedTimer>
 #include <QMetaObject>
@@ -20,6 +22,7 @@
 #include <QTimer>
 #include <QWidget>
 
+class QGridLayout;
 class QHBoxLayout;
 class QLabel;
 class QProgressBar;
@@ -216,22 +219,50 @@ public:
     QPushButton* startButton() const { return run_.row.start; }
     QPushButton* stopButton() const { return run_.row.stop; }
     QLabel* statusLabel() const { return run_.status; }
+    /// The folder followed ("" until one is chosen).
+    QString folderPath() const { return folder_; }
+    /// The details panel beside the plot.
+    QLabel* details() const { return details_; }
 
 protected:
-    /// The folder's label ("–" until one is chosen), its button and the grey hint below them.
-    struct FolderWidgets {
-        QLabel* label;
-        QPushButton* button;
-        QLabel* hint;
+    /// What the folder's rows say: the row's name, its button, the title of the folder dialog
+    /// the button opens, and the grey hint below.
+    struct FolderRowTexts {
+        QString name, button, dialogTitle, hint;
     };
-    FolderWidgets makeFolderWidgets(const QString& buttonText, const QString& hint);
+    /// Makes the folder's label ("–" until one is chosen), its button (which hands the folder
+    /// chosen in the dialog to `chosen`) and the hint, and adds them to `grid` as rows 1 (the
+    /// name, the label spanning `span` columns, the button) and 2 (the hint under the label and
+    /// the button); column `span` of `grid` takes the room.
+    void addFolderRows(QGridLayout* grid, const FolderRowTexts& texts, int span,
+                       std::function<void(const QString&)> chosen);
+    /// `folder` (absolute and clean) becomes folder_, shown in the folder's label.
+    void showFolder(const QString& folder);
     /// The row of the view's plot (taking the room) and, beside it, its details panel, made here
-    /// into `details`: wrapped, selectable text, `width` px wide, showing `text` to start with.
-    QHBoxLayout* plotWithDetails(QWidget* plot, QLabel*& details, const QString& text, int width);
+    /// into details_: wrapped, selectable text, `width` px wide, showing `text` to start with.
+    QHBoxLayout* plotWithDetails(QWidget* plot, const QString& text, int width);
+    /// The row of the plot's choices: each box after its label ("Test:"), then the room.
+    static QHBoxLayout* choicesRow(std::initializer_list<std::pair<QString, QWidget*>> choices);
 
+    FolderCommand run_;
+    QString folder_;
+    QLabel* folderLabel_ = nullptr;
+    QPushButton* folderButton_ = nullptr;
+    QLabel* details_ = nullptr;
+};
+
+/// A FolderCommandView whose folder reads (on the worker thread) as a `Result`.
+template <class Result>
+class FolderScanView : public FolderCommandView {
+public:
+    using FolderCommandView::FolderCommandView;
+
+    /// What the latest scan read in the folder (null until the folder is read).
+    std::shared_ptr<const Result> folderState() const { return state_; }
+
+protected:
     /// Reads the folder with `scan` on the worker thread, then hands the result to `scanned`;
     /// a scan that threw puts its message in the status line.
-    template <class Result>
     void scanFolder(std::function<std::shared_ptr<const Result>()> scan,
                     std::function<void(std::shared_ptr<const Result>)> scanned) {
         run_.scans.request<Result>(
@@ -247,7 +278,7 @@ protected:
             [this] { run_.rescanNow(); });
     }
 
-    FolderCommand run_;
+    std::shared_ptr<const Result> state_;
 };
 
 } // namespace grainlab::ui

@@ -77,7 +77,7 @@ double shownValue(const StabilityCellResult& r, StabilityValue value) {
 } // namespace
 
 StabilityView::StabilityView(QWidget* parent, QString grainlab)
-    : FolderCommandView(
+    : FolderScanView(
           parent, {}, grainlab,
           {tr("Run the map (grainlab stability … --out FOLDER); a stopped map continues where "
               "it stopped"),
@@ -103,25 +103,20 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
     presetLabel_ = new QLabel;
     presetLabel_->setWordWrap(true);
     presetLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    const FolderWidgets folder = makeFolderWidgets(
-        tr("Open folder…"),
-        tr("By default a new map goes to stability-<name> in the runs folder. A folder that holds "
-           "a map shows it at once, and Start continues it: finished cells are not redone."));
-    folderLabel_ = folder.label;
-    folderButton_ = folder.button;
-    folderButton_->setToolTip(tr("A map folder to show and continue, or a new or empty folder "
-                                 "for the map to start"));
-    connect(folderButton_, &QPushButton::clicked, this, &StabilityView::chooseFolderDialog);
-
     auto* files = new QGridLayout;
     files->addWidget(new QLabel(tr("Map:")), 0, 0);
     files->addWidget(preset_, 0, 1);
     files->addWidget(presetLabel_, 0, 2, 1, 2);
-    files->addWidget(new QLabel(tr("Map folder:")), 1, 0);
-    files->addWidget(folderLabel_, 1, 1, 1, 2);
-    files->addWidget(folderButton_, 1, 3);
-    files->addWidget(folder.hint, 2, 1, 1, 3);
-    files->setColumnStretch(2, 1);
+    addFolderRows(
+        files,
+        {tr("Map folder:"), tr("Open folder…"),
+         tr("Map folder (a map to show, or a new or empty folder)"),
+         tr("By default a new map goes to stability-<name> in the runs folder. A folder that "
+            "holds a map shows it at once, and Start continues it: finished cells are not "
+            "redone.")},
+        2, [this](const QString& folder) { setMapFolder(folder); });
+    folderButton_->setToolTip(tr("A map folder to show and continue, or a new or empty folder "
+                                 "for the map to start"));
 
     xAxis_ = new QComboBox;
     yAxis_ = new QComboBox;
@@ -142,14 +137,8 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
     value_->addItem(tr("measured limit (the estimate below)"), int(StabilityValue::Limit));
     value_->addItem(tr("limit / estimate"), int(StabilityValue::LimitOverEstimate));
     connect(value_, &QComboBox::currentIndexChanged, this, &StabilityView::redraw);
-    auto* mapRow = new QHBoxLayout;
-    mapRow->addWidget(new QLabel(tr("Across:")));
-    mapRow->addWidget(xAxis_);
-    mapRow->addWidget(new QLabel(tr("Up:")));
-    mapRow->addWidget(yAxis_);
-    mapRow->addWidget(new QLabel(tr("Show:")));
-    mapRow->addWidget(value_);
-    mapRow->addStretch(1);
+    auto* mapRow =
+        choicesRow({{tr("Across:"), xAxis_}, {tr("Up:"), yAxis_}, {tr("Show:"), value_}});
 
     heatMap_ = new HeatMapView;
     heatMap_->setToolTip(tr("Hover or click a square for its cells' numbers"));
@@ -164,7 +153,7 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
         heatMap_->setSelectedCell(square);
         showSquare(square);
     });
-    auto* centre = plotWithDetails(heatMap_, details_, {}, 320);
+    auto* centre = plotWithDetails(heatMap_, {}, 320);
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(files);
@@ -282,8 +271,7 @@ void StabilityView::setMapFolder(const QString& folder) {
 }
 
 void StabilityView::followFolder(const QString& folder, bool adoptItsMap) {
-    folder_ = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
-    folderLabel_->setText(folder_);
+    showFolder(folder);
     state_.reset();
     adoptFolderMap_ = adoptItsMap;
     selected_ = kNoSquare;
@@ -327,11 +315,9 @@ void StabilityView::rescan() {
         return;
     }
     // Everything the scan needs is copied in: the worker never touches the view.
-    scanFolder<StabilityFolder>(
-        [folder = folder_.toStdString(), previous = state_] {
-            return scanStabilityFolder(folder, previous);
-        },
-        [this](std::shared_ptr<const StabilityFolder> next) { scanned(std::move(next)); });
+    scanFolder([folder = folder_.toStdString(),
+                previous = state_] { return scanStabilityFolder(folder, previous); },
+               [this](std::shared_ptr<const StabilityFolder> next) { scanned(std::move(next)); });
 }
 
 void StabilityView::scanned(std::shared_ptr<const StabilityFolder> state) {
@@ -513,14 +499,6 @@ void StabilityView::showSquare(QPoint square) {
         }
     }
     details_->setText(text);
-}
-
-void StabilityView::chooseFolderDialog() {
-    const QString folder = QFileDialog::getExistingDirectory(
-        this, tr("Map folder (a map to show, or a new or empty folder)"), folder_);
-    if (!folder.isEmpty()) {
-        setMapFolder(folder);
-    }
 }
 
 void StabilityView::showEvent(QShowEvent* event) {

@@ -31,7 +31,7 @@ namespace grainlab::ui {
 
 class HeatMapView;
 
-class StabilityView : public FolderCommandView {
+class StabilityView : public FolderScanView<StabilityFolder> {
     Q_OBJECT
 public:
     /// `grainlab`: the executable that runs `grainlab stability` (default: this application's).
@@ -72,13 +72,10 @@ public:
     /// What the heat map shows.
     void setValue(StabilityValue value);
     /// The finished cells drawn in square `cell` (column, row) of the heat map, as indices into
-    /// folder()->results, the one whose value is drawn (the smallest) first.
+    /// folderState()->results, the one whose value is drawn (the smallest) first.
     std::vector<int> resultsInSquare(QPoint cell) const;
 
-    QString mapFolder() const { return folder_; }
-    std::shared_ptr<const StabilityFolder> folder() const { return state_; }
     HeatMapView* heatMap() const { return heatMap_; }
-    QLabel* details() const { return details_; }
     QComboBox* presetBox() const { return preset_; }
     QComboBox* xAxisBox() const { return xAxis_; }
     QComboBox* yAxisBox() const { return yAxis_; }
@@ -98,7 +95,6 @@ private:
     void followFolder(const QString& folder, bool adoptItsMap);
     bool setChoice(const QString& nameOrFile, QString* error, bool moveDefaultFolder);
     void presetChosenInBox(int index);
-    void chooseFolderDialog();
     void scanned(std::shared_ptr<const StabilityFolder> state);
     void redraw();
     void updateControls();
@@ -106,24 +102,19 @@ private:
     void showSquare(QPoint cell);
     void axisChosen(QComboBox* changed, QComboBox* other, int previous);
 
-    QString choice_;              ///< what Start runs: a shipped name, a file, "" (the folder's)
-    StabilityMapSpec choiceSpec_; ///< the preset chosen (unset for "")
-    QString folder_;
+    QString choice_;               ///< what Start runs: a shipped name, a file, "" (the folder's)
+    StabilityMapSpec choiceSpec_;  ///< the preset chosen (unset for "")
     bool folderIsDefault_ = false; ///< the folder follows the preset chosen
     bool adoptFolderMap_ = false;  ///< the next scan that finds a map makes it the choice
-    std::shared_ptr<const StabilityFolder> state_;
-    QPoint selected_{-1, -1};   ///< the square clicked last
-    int lastX_ = 0, lastY_ = 3; ///< the axes' combo indices before the latest change
+    QPoint selected_{-1, -1};      ///< the square clicked last
+    int lastX_ = 0, lastY_ = 3;    ///< the axes' combo indices before the latest change
 
     QComboBox* preset_;
     QLabel* presetLabel_;
-    QLabel* folderLabel_;
-    QPushButton* folderButton_;
     QComboBox* xAxis_;
     QComboBox* yAxis_;
     QComboBox* value_;
     HeatMapView* heatMap_;
-    QLabel* details_;
 };
 
 } // namespace grainlab::ui

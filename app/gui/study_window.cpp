@@ -60,7 +60,7 @@ void setItems(QComboBox* box, const QStringList& items) {
 } // namespace
 
 StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
-    : FolderCommandView(
+    : FolderScanView(
           parent, Qt::Window, grainlab,
           {tr("Run the study (grainlab study FILE --out FOLDER); a stopped study continues "
               "where it stopped"),
@@ -79,23 +79,16 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     fileLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     auto* openButton = new QPushButton(tr("Open study…"));
     connect(openButton, &QPushButton::clicked, this, &StudyWindow::openStudyDialog);
-    const FolderWidgets folder = makeFolderWidgets(
-        tr("Choose…"),
-        tr("By default a folder named after the study beside the study file. A folder that "
-           "already holds this study is continued: finished runs are not redone."));
-    folderLabel_ = folder.label;
-    folderButton_ = folder.button;
-    connect(folderButton_, &QPushButton::clicked, this, &StudyWindow::chooseFolderDialog);
-
     auto* files = new QGridLayout;
     files->addWidget(new QLabel(tr("Study file:")), 0, 0);
     files->addWidget(fileLabel_, 0, 1);
     files->addWidget(openButton, 0, 2);
-    files->addWidget(new QLabel(tr("Study folder:")), 1, 0);
-    files->addWidget(folderLabel_, 1, 1);
-    files->addWidget(folderButton_, 1, 2);
-    files->addWidget(folder.hint, 2, 1, 1, 2);
-    files->setColumnStretch(1, 1);
+    addFolderRows(files,
+                  {tr("Study folder:"), tr("Choose…"), tr("Study folder"),
+                   tr("By default a folder named after the study beside the study file. A "
+                      "folder that already holds this study is continued: finished runs are not "
+                      "redone.")},
+                  1, [this](const QString& folder) { setStudyFolder(folder); });
 
     test_ = new QComboBox;
     test_->setToolTip(tr("The shear test (confining pressure) charted"));
@@ -108,12 +101,7 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
     recommended_ = new QPushButton(tr("Open recommended.json"));
     recommended_->setToolTip(tr("Load the recommended setting as the main window's experiment"));
     connect(recommended_, &QPushButton::clicked, this, &StudyWindow::openRecommended);
-    auto* chartRow = new QHBoxLayout;
-    chartRow->addWidget(new QLabel(tr("Test:")));
-    chartRow->addWidget(test_);
-    chartRow->addWidget(new QLabel(tr("Metric:")));
-    chartRow->addWidget(metric_);
-    chartRow->addStretch(1);
+    auto* chartRow = choicesRow({{tr("Test:"), test_}, {tr("Metric:"), metric_}});
     chartRow->addWidget(export_);
     chartRow->addWidget(recommended_);
 
@@ -122,8 +110,7 @@ StudyWindow::StudyWindow(QWidget* parent, QString grainlab)
                           "run in the main window"));
     connect(chart_, &PlotView::pointHovered, this, &StudyWindow::showPoint);
     connect(chart_, &PlotView::pointClicked, this, &StudyWindow::clickPoint);
-    auto* centre =
-        plotWithDetails(chart_, details_, tr("Hover a point for its setting and numbers."), 300);
+    auto* centre = plotWithDetails(chart_, tr("Hover a point for its setting and numbers."), 300);
 
     auto* studyTab = new QWidget;
     auto* layout = new QVBoxLayout(studyTab);
@@ -214,9 +201,8 @@ void StudyWindow::setStudyFolder(const QString& folder) {
     if (running()) {
         return;
     }
-    folder_ = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
-    folderLabel_->setText(folder_);
-    progress_.reset();
+    showFolder(folder);
+    state_.reset();
     run_.newFolder();
 }
 
@@ -230,7 +216,7 @@ bool StudyWindow::start(QString* error) {
     }
     run_.launch({QStringLiteral("study"), studyFile_, QStringLiteral("--out"), folder_},
                 QStringLiteral("study-%1").arg(q(spec_.name)),
-                progress_ ? progress_->finishedCount() : 0);
+                state_ ? state_->finishedCount() : 0);
     return true;
 }
 
@@ -256,18 +242,16 @@ void StudyWindow::rescan() {
         return;
     }
     // Everything the scan needs is copied in: the worker never touches the window.
-    scanFolder<StudyProgress>(
-        [folder = folder_.toStdString(), spec = spec_, plan = plan_, previous = progress_] {
-            return scanStudyFolder(folder, spec, plan, previous);
-        },
-        [this](std::shared_ptr<const StudyProgress> next) { scanned(std::move(next)); });
+    scanFolder([folder = folder_.toStdString(), spec = spec_, plan = plan_,
+                previous = state_] { return scanStudyFolder(folder, spec, plan, previous); },
+               [this](std::shared_ptr<const StudyProgress> next) { scanned(std::move(next)); });
 }
 
 void StudyWindow::scanned(std::shared_ptr<const StudyProgress> progress) {
-    const bool changed = progress != progress_;
-    progress_ = std::move(progress);
-    if (!progress_->errors.empty()) {
-        run_.status->setText(q(progress_->errors.front()));
+    const bool changed = progress != state_;
+    state_ = std::move(progress);
+    if (!state_->errors.empty()) {
+        run_.status->setText(q(state_->errors.front()));
     }
     if (changed) {
         fillChoices();
@@ -279,11 +263,11 @@ void StudyWindow::scanned(std::shared_ptr<const StudyProgress> progress) {
 }
 
 void StudyWindow::fillChoices() {
-    if (!progress_) {
+    if (!state_) {
         return;
     }
     QStringList tests;
-    for (const std::string& t : progress_->summary.tests) {
+    for (const std::string& t : state_->summary.tests) {
         tests << q(t);
     }
     setItems(test_, tests);
@@ -291,7 +275,7 @@ void StudyWindow::fillChoices() {
     for (int k = 0; k < metric_->count(); ++k) {
         metrics << metric_->itemText(k);
     }
-    for (const SettingSummary& s : progress_->summary.settings) {
+    for (const SettingSummary& s : state_->summary.settings) {
         for (const MetricSummary& m : s.metrics) {
             if (!metrics.contains(q(m.metric))) {
                 metrics << q(m.metric);
@@ -303,8 +287,8 @@ void StudyWindow::fillChoices() {
 
 void StudyWindow::redraw() {
     PlotPainter plot;
-    if (progress_ && !progress_->results.empty() && test_->count() > 0 && metric_->count() > 0) {
-        plot = errorCostPlot(spec_, plan_, progress_->summary, test_->currentText().toStdString(),
+    if (state_ && !state_->results.empty() && test_->count() > 0 && metric_->count() > 0) {
+        plot = errorCostPlot(spec_, plan_, state_->summary, test_->currentText().toStdString(),
                              metric_->currentText().toStdString());
     } else {
         plot.title = haveStudy_ ? tr("no finished runs yet") : tr("open a study file");
@@ -320,13 +304,13 @@ void StudyWindow::updateControls() {
     run_.row.start->setEnabled(haveStudy_ && !isRunning);
     run_.row.stop->setEnabled(isRunning);
     folderButton_->setEnabled(haveStudy_ && !isRunning);
-    export_->setEnabled(progress_ && !progress_->results.empty());
+    export_->setEnabled(state_ && !state_->results.empty());
     recommended_->setEnabled(!folder_.isEmpty() &&
                              QFileInfo::exists(QDir(folder_).filePath("recommended.json")));
 }
 
 void StudyWindow::updateProgressText() {
-    run_.row.show(progress_ ? progress_->finishedCount() : 0, int(plan_.runs.size()), running());
+    run_.row.show(state_ ? state_->finishedCount() : 0, int(plan_.runs.size()), running());
 }
 
 int StudyWindow::settingOfPoint(int point) const {
@@ -343,11 +327,11 @@ int StudyWindow::settingOfPoint(int point) const {
 }
 
 QString StudyWindow::firstFinishedRunFolder(int setting) const {
-    if (!progress_) {
+    if (!state_) {
         return {};
     }
     for (std::size_t i = 0; i < plan_.runs.size(); ++i) {
-        if (plan_.runs[i].setting == setting && progress_->finished[i]) {
+        if (plan_.runs[i].setting == setting && state_->finished[i]) {
             return QDir(folder_).filePath(QStringLiteral("runs/") + q(plan_.runs[i].id));
         }
     }
@@ -356,12 +340,12 @@ QString StudyWindow::firstFinishedRunFolder(int setting) const {
 
 void StudyWindow::showPoint(int point) {
     const int setting = settingOfPoint(point);
-    if (setting < 0 || !progress_) {
+    if (setting < 0 || !state_) {
         details_->setText(tr("Hover a point for its setting and numbers."));
         return;
     }
     const StudySetting& st = plan_.settings[std::size_t(setting)];
-    const SettingSummary& s = progress_->summary.settings[std::size_t(setting)];
+    const SettingSummary& s = state_->summary.settings[std::size_t(setting)];
     const std::string test = test_->currentText().toStdString();
     const std::string metric = metric_->currentText().toStdString();
     QStringList lines;
@@ -369,7 +353,7 @@ void StudyWindow::showPoint(int point) {
     if (st.isReference) {
         head += tr(" (the reference)");
     }
-    if (progress_->summary.recommended == setting) {
+    if (state_->summary.recommended == setting) {
         head += tr(" (recommended)");
     }
     lines << head;
@@ -420,7 +404,7 @@ void StudyWindow::clickPoint(int point) {
 }
 
 QStringList StudyWindow::exportFigures(const QString& folder, QString* error) {
-    if (!progress_ || progress_->results.empty()) {
+    if (!state_ || state_->results.empty()) {
         if (error) {
             *error = tr("No finished runs to draw yet.");
         }
@@ -432,7 +416,7 @@ QStringList StudyWindow::exportFigures(const QString& folder, QString* error) {
         }
         return {};
     }
-    return writeStudyFigures(folder, spec_, plan_, progress_->results, progress_->summary, error);
+    return writeStudyFigures(folder, spec_, plan_, state_->results, state_->summary, error);
 }
 
 void StudyWindow::openStudyDialog() {
@@ -442,13 +426,6 @@ void StudyWindow::openStudyDialog() {
     QString error;
     if (!path.isEmpty() && !openStudy(path, &error)) {
         run_.status->setText(error);
-    }
-}
-
-void StudyWindow::chooseFolderDialog() {
-    const QString folder = QFileDialog::getExistingDirectory(this, tr("Study folder"), folder_);
-    if (!folder.isEmpty()) {
-        setStudyFolder(folder);
     }
 }
 

@@ -32,7 +32,7 @@ namespace grainlab::ui {
 class PlotView;
 class StabilityView;
 
-class StudyWindow : public FolderCommandView {
+class StudyWindow : public FolderScanView<StudyProgress> {
     Q_OBJECT
 public:
     /// `grainlab`: the executable that runs `grainlab study` (default: this application's).
@@ -67,10 +67,7 @@ public:
     const StudySpec& spec() const { return spec_; }
     const StudyPlan& plan() const { return plan_; }
     QString studyFile() const { return studyFile_; }
-    QString studyFolder() const { return folder_; }
-    std::shared_ptr<const StudyProgress> progress() const { return progress_; }
     PlotView* chart() const { return chart_; }
-    QLabel* details() const { return details_; }
     QComboBox* testBox() const { return test_; }
     QComboBox* metricBox() const { return metric_; }
     QPushButton* recommendedButton() const { return recommended_; }
@@ -92,7 +89,6 @@ signals:
 
 private:
     void openStudyDialog();
-    void chooseFolderDialog();
     void exportFiguresDialog();
     void openRecommended();
     void scanned(std::shared_ptr<const StudyProgress> progress);
@@ -104,19 +100,15 @@ private:
     void clickPoint(int point);
     QString logTail() const;
 
-    QString studyFile_, folder_;
+    QString studyFile_;
     StudySpec spec_;
     StudyPlan plan_;
     bool haveStudy_ = false;
-    std::shared_ptr<const StudyProgress> progress_;
 
     QLabel* fileLabel_;
-    QLabel* folderLabel_;
-    QPushButton* folderButton_;
     QComboBox* test_;
     QComboBox* metric_;
     PlotView* chart_;
-    QLabel* details_;
     QPushButton* export_;
     QPushButton* recommended_;
     QTabWidget* tabs_;

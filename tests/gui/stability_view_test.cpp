@@ -107,8 +107,8 @@ QColor fillOf(StabilityView& v, const QImage& image, QPoint s) {
 bool waitForCells(const StabilityView& v, int cells) {
     return waitFor(
         [&] {
-            return v.folder() && v.folder()->kind == StabilityFolder::Kind::Map &&
-                   v.folder()->finishedCount() == cells;
+            return v.folderState() && v.folderState()->kind == StabilityFolder::Kind::Map &&
+                   v.folderState()->finishedCount() == cells;
         },
         30000);
 }
@@ -216,7 +216,7 @@ TEST(StabilityView, PaintsEachSquareInTheColourOfItsCellsLimit) {
         // The square's details: the cell drawn (the smallest) first, the other one after it.
         const std::vector<int> inSquare = v.resultsInSquare(s);
         ASSERT_EQ(inSquare.size(), 2u) << packing;
-        EXPECT_EQ(v.folder()->results[std::size_t(inSquare[0])].limit.limit, limit);
+        EXPECT_EQ(v.folderState()->results[std::size_t(inSquare[0])].limit.limit, limit);
     }
     // The same axis both ways is refused: the other box takes the axis just left.
     v.xAxisBox()->setCurrentIndex(v.xAxisBox()->findData(int(StabilityAxis::Packing)));
@@ -307,8 +307,9 @@ TEST(StabilityView, RefusesAFolderThatHoldsSomethingElseSayingWhy) {
     const auto refusal = [&](const QString& folder) {
         v.setMapFolder(folder);
         EXPECT_TRUE(waitFor(
-            [&] { return v.folder() && v.folder()->kind != StabilityFolder::Kind::New; }, 30000));
-        EXPECT_EQ(int(v.folder()->kind), int(StabilityFolder::Kind::Refused));
+            [&] { return v.folderState() && v.folderState()->kind != StabilityFolder::Kind::New; },
+            30000));
+        EXPECT_EQ(int(v.folderState()->kind), int(StabilityFolder::Kind::Refused));
         EXPECT_FALSE(v.startButton()->isEnabled());
         EXPECT_TRUE(v.heatMap()->map().values.empty());
         QString error;
@@ -340,8 +341,8 @@ TEST(StabilityView, RefusesAFolderThatHoldsSomethingElseSayingWhy) {
         << why.toStdString();
     // A new folder is not refused: Start would run the chosen preset into it.
     v.setMapFolder(dir.filePath("new"));
-    ASSERT_TRUE(waitFor([&] { return v.folder() != nullptr; }, 30000));
-    EXPECT_EQ(int(v.folder()->kind), int(StabilityFolder::Kind::New));
+    ASSERT_TRUE(waitFor([&] { return v.folderState() != nullptr; }, 30000));
+    EXPECT_EQ(int(v.folderState()->kind), int(StabilityFolder::Kind::New));
     EXPECT_EQ(v.preset(), QStringLiteral("tiny"));
     EXPECT_TRUE(v.startButton()->isEnabled());
     EXPECT_TRUE(v.statusLabel()->text().isEmpty()) << v.statusLabel()->text().toStdString();
@@ -438,7 +439,7 @@ TEST(StabilityView, AFailingMapShowsItsErrorLines) {
     ASSERT_TRUE(waitForCells(v, 0));
     QString error;
     ASSERT_TRUE(v.choosePreset(otherPreset, &error)) << error.toStdString();
-    EXPECT_EQ(v.mapFolder(), folder); // a folder chosen by the user stays
+    EXPECT_EQ(v.folderPath(), folder); // a folder chosen by the user stays
     QSignalSpy ended(&v, &StabilityView::mapEnded);
     ASSERT_TRUE(v.start(&error)) << error.toStdString();
     ASSERT_TRUE(waitFor([&] { return !v.running(); }, 120000));
@@ -475,9 +476,9 @@ TEST(StabilityView, TheTinyPresetStartedFromTheStudyWindowRunsToTheEnd) {
     v->setMapFolder(folder);
     QString error;
     ASSERT_TRUE(v->choosePreset(QStringLiteral("tiny"), &error)) << error.toStdString();
-    EXPECT_EQ(v->mapFolder(), folder);
-    ASSERT_TRUE(waitFor([&] { return v->folder() != nullptr; }, 30000));
-    EXPECT_EQ(int(v->folder()->kind), int(StabilityFolder::Kind::New));
+    EXPECT_EQ(v->folderPath(), folder);
+    ASSERT_TRUE(waitFor([&] { return v->folderState() != nullptr; }, 30000));
+    EXPECT_EQ(int(v->folderState()->kind), int(StabilityFolder::Kind::New));
     EXPECT_EQ(v->progressBar()->maximum(), 4);
 
     // Start, then Stop once a cell has finished: the map ends and keeps its cells.
@@ -486,10 +487,12 @@ TEST(StabilityView, TheTinyPresetStartedFromTheStudyWindowRunsToTheEnd) {
     EXPECT_FALSE(v->startButton()->isEnabled());
     EXPECT_TRUE(v->stopButton()->isEnabled());
     EXPECT_FALSE(v->presetBox()->isEnabled());
-    ASSERT_TRUE(
-        waitFor([&] { return !v->running() || (v->folder() && v->folder()->finishedCount() >= 1); },
-                300000));
-    if (v->running() && v->folder()->finishedCount() < 4) {
+    ASSERT_TRUE(waitFor(
+        [&] {
+            return !v->running() || (v->folderState() && v->folderState()->finishedCount() >= 1);
+        },
+        300000));
+    if (v->running() && v->folderState()->finishedCount() < 4) {
         v->stop();
         ASSERT_TRUE(waitFor([&] { return !v->running(); }, 120000));
         if (v->lastExitStatus().value_or(-99) != 0) { // else it ended before the signal

@@ -56,7 +56,7 @@ std::string runLogs(const QString& folder) {
 }
 
 int finished(const StudyWindow& s) {
-    return s.progress() ? s.progress()->finishedCount() : 0;
+    return s.folderState() ? s.folderState()->finishedCount() : 0;
 }
 
 TEST(StudyWindow, RefusesABadStudyFileAndAFolderHoldingSomethingElse) {
@@ -77,7 +77,7 @@ TEST(StudyWindow, RefusesABadStudyFileAndAFolderHoldingSomethingElse) {
     // A good one: 3 settings x 2 seeds; the folder named after the study beside the file.
     ASSERT_TRUE(s.openStudy(kTinyStudy, &error)) << error.toStdString();
     EXPECT_EQ(s.plan().runs.size(), 6u);
-    EXPECT_EQ(s.studyFolder(), QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/studies/tiny"));
+    EXPECT_EQ(s.folderPath(), QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/studies/tiny"));
     EXPECT_TRUE(s.startButton()->isEnabled());
     // A folder that holds something else: the study refuses it, and the window says why.
     const QString other = dir.filePath("other");
