@@ -28,12 +28,12 @@ using test::smallAssembly;
 /// equilibrium rule holds or `maxSteps` steps.
 scenes::CompactedSceneSpec compaction(int grains, double aspect, std::uint64_t seed,
                                       double pressure, std::int64_t maxSteps) {
-    scenes::CompactedSceneSpec spec;
-    spec.grains = grains;
-    spec.aspectRatio = aspect;
-    spec.seed = seed;
-    spec.pressure = pressure;
-    spec.maxStrainRate = 40.0;
+    scenes::CompactedSceneSpec spec{.grains = grains,
+                                    .aspectRatio = aspect,
+                                    .widths = {},
+                                    .seed = seed,
+                                    .pressure = pressure,
+                                    .maxStrainRate = 40.0};
     spec.criterion.maxSteps = maxSteps;
     return spec;
 }
