@@ -41,4 +41,12 @@ inline nlohmann::json smallQuickExperiment() {
     return j;
 }
 
+/// The small quick experiment at one pressure: compacted and sheared at 25 kPa.
+inline nlohmann::json smallQuickExperimentAt25kPa() {
+    nlohmann::json j = smallQuickExperiment();
+    j["compaction"]["pressures"] = {25e3};
+    j["shear"]["pressures"] = {25e3};
+    return j;
+}
+
 } // namespace grainlab::test

@@ -122,6 +122,18 @@ std::map<Where, RunProgress> runAll(ExperimentRunner& runner) {
     return seen;
 }
 
+/// A run of `config` kept in memory, from its start or resumed from a point another run kept,
+/// played to the end by runAll (`seen`: the progress it noted).
+struct KeptRun {
+    explicit KeptRun(const ExperimentConfig& config) : runner(config, &out), seen(runAll(runner)) {}
+    KeptRun(const ExperimentConfig& config, ResumePoint from)
+        : runner(config, std::move(from), &out), seen(runAll(runner)) {}
+
+    MemoryOutput out;
+    ExperimentRunner runner;
+    std::map<Where, RunProgress> seen;
+};
+
 TEST(ExperimentRunnerStages, ARunnerStateReadsBackToTheSameText) {
     MemoryOutput out;
     ExperimentRunner runner(smallQuick(), &out);
@@ -169,9 +181,7 @@ TEST(ExperimentRunnerStages, ARunnerStateOfEarlierFilesReads) {
 
 TEST(ExperimentRunnerStages, AResumedRunReportsWhatTheUnbrokenOneDidAndEndsTheSame) {
     const ExperimentConfig config = smallQuick();
-    MemoryOutput out;
-    ExperimentRunner unbroken(config, &out);
-    const std::map<Where, RunProgress> seen = runAll(unbroken);
+    const KeptRun unbroken(config);
 
     // Progress over a whole run, in the order it goes: 0 at its start, 1 at its end, never
     // decreasing.
@@ -191,7 +201,7 @@ TEST(ExperimentRunnerStages, AResumedRunReportsWhatTheUnbrokenOneDidAndEndsTheSa
     // One checkpoint in the middle of the second test's shear, one at a compaction's end.
     const Kept* midShear = nullptr;
     const Kept* stageEnd = nullptr;
-    for (const Kept& k : out.kept) {
+    for (const Kept& k : unbroken.out.kept) {
         if (k.identity.peak || k.runnerState.empty()) {
             continue;
         }
@@ -207,13 +217,11 @@ TEST(ExperimentRunnerStages, AResumedRunReportsWhatTheUnbrokenOneDidAndEndsTheSa
     ASSERT_NE(midShear, nullptr);
     ASSERT_NE(stageEnd, nullptr);
     for (const Kept* from : {midShear, stageEnd}) {
-        MemoryOutput again;
-        ExperimentRunner resumed(config, out.resumeFrom(*from), &again);
-        const std::map<Where, RunProgress> after = runAll(resumed);
+        const KeptRun resumed(config, unbroken.out.resumeFrom(*from));
         int compared = 0;
-        for (const auto& [where, p] : after) {
-            const auto it = seen.find(where);
-            if (it == seen.end()) {
+        for (const auto& [where, p] : resumed.seen) {
+            const auto it = unbroken.seen.find(where);
+            if (it == unbroken.seen.end()) {
                 continue;
             }
             EXPECT_EQ(p.fraction, it->second.fraction) << std::get<0>(where) << " " << p.step;
@@ -225,13 +233,14 @@ TEST(ExperimentRunnerStages, AResumedRunReportsWhatTheUnbrokenOneDidAndEndsTheSa
             ++compared;
         }
         EXPECT_GE(compared, 5) << from->name;
-        ASSERT_EQ(resumed.series().size(), unbroken.series().size());
-        for (std::size_t t = 0; t < resumed.series().size(); ++t) {
-            EXPECT_EQ(resumed.series()[t].rows, unbroken.series()[t].rows) << from->name;
-            EXPECT_EQ(resumed.series()[t].stages, unbroken.series()[t].stages);
+        const auto& series = resumed.runner.series();
+        ASSERT_EQ(series.size(), unbroken.runner.series().size());
+        for (std::size_t t = 0; t < series.size(); ++t) {
+            EXPECT_EQ(series[t].rows, unbroken.runner.series()[t].rows) << from->name;
+            EXPECT_EQ(series[t].stages, unbroken.runner.series()[t].stages);
         }
-        EXPECT_EQ(resumed.simulation().stateRef().grains.x1,
-                  unbroken.simulation().stateRef().grains.x1);
+        EXPECT_EQ(resumed.runner.simulation().stateRef().grains.x1,
+                  unbroken.runner.simulation().stateRef().grains.x1);
     }
 }
 
@@ -275,9 +284,7 @@ TEST(ExperimentRunnerStages, TheStageIdentityTravelsAsData) {
 /// The small quick experiment at one pressure with the tests `tests` (a "test" list), shear to
 /// 0.2 %.
 ExperimentConfig withTests(const nlohmann::json& tests) {
-    nlohmann::json j = test::smallQuickExperiment();
-    j["compaction"]["pressures"] = {25e3};
-    j["shear"]["pressures"] = {25e3};
+    nlohmann::json j = test::smallQuickExperimentAt25kPa();
     j["record"]["snapshot_strain_interval"] = 0.0005;
     if (!tests.is_null()) {
         j["test"] = tests;
@@ -441,26 +448,23 @@ TEST(ExperimentRunnerStages, EveryMonotonicKindRunsInExtensionAndHoldsItsPath) {
 TEST(ExperimentRunnerStages, EveryTestKindResumesFromTheMiddleOfItsTestBitForBit) {
     const ExperimentConfig config = withTests(nlohmann::json::parse(
         R"([{"kind": "constant_volume"}, {"kind": "stress_path", "slope": 0.5}])"));
-    MemoryOutput out;
-    ExperimentRunner unbroken(config, &out);
-    runAll(unbroken);
+    const KeptRun unbroken(config);
     for (const std::string kind : {"constant_volume", "stress_path"}) {
-        const Kept* middle = out.firstKept([&](const Kept& k) {
+        const Kept* middle = unbroken.out.firstKept([&](const Kept& k) {
             return !k.identity.peak && !k.runnerState.empty() && k.identity.kind == kind &&
                    k.identity.axialStrain > 0.0005;
         });
         ASSERT_NE(middle, nullptr) << kind;
-        MemoryOutput again;
-        ExperimentRunner resumed(config, out.resumeFrom(*middle), &again);
-        runAll(resumed);
-        ASSERT_EQ(resumed.series().size(), unbroken.series().size());
-        for (std::size_t t = 0; t < resumed.series().size(); ++t) {
-            EXPECT_EQ(resumed.series()[t].rows, unbroken.series()[t].rows)
-                << kind << " " << resumed.series()[t].test;
+        const KeptRun resumed(config, unbroken.out.resumeFrom(*middle));
+        const auto& series = resumed.runner.series();
+        ASSERT_EQ(series.size(), unbroken.runner.series().size());
+        for (std::size_t t = 0; t < series.size(); ++t) {
+            EXPECT_EQ(series[t].rows, unbroken.runner.series()[t].rows)
+                << kind << " " << series[t].test;
         }
-        EXPECT_EQ(resumed.simulation().stateRef().grains.x1,
-                  unbroken.simulation().stateRef().grains.x1);
-        EXPECT_EQ(resumed.simulation().stateRef().cell, unbroken.simulation().stateRef().cell);
+        const SimulationState& end = unbroken.runner.simulation().stateRef();
+        EXPECT_EQ(resumed.runner.simulation().stateRef().grains.x1, end.grains.x1);
+        EXPECT_EQ(resumed.runner.simulation().stateRef().cell, end.cell);
     }
 }
 
@@ -469,10 +473,8 @@ TEST(ExperimentRunnerStages, ACyclicTestFollowsItsWaveformAndMakesItsCycles) {
     // 18000 of the test. Records every 400 steps, so every peak is a record.
     const ExperimentConfig config =
         withTests(nlohmann::json::parse(R"({"kind": "cyclic", "amplitude": 0.001, "cycles": 2})"));
-    MemoryOutput out;
-    ExperimentRunner runner(config, &out);
-    runAll(runner);
-    const SeriesTable& t = runner.series().back();
+    const KeptRun run(config);
+    const SeriesTable& t = run.runner.series().back();
     EXPECT_EQ(t.test, "p025kPa-cyclic");
     const auto rows = testRows(t);
     ASSERT_EQ(rows.size(), 46u); // steps 0, 400, ..., 18000
@@ -492,32 +494,29 @@ TEST(ExperimentRunnerStages, ACyclicTestFollowsItsWaveformAndMakesItsCycles) {
     EXPECT_EQ(reversalIndices(eps1).size(), 4u); // 2N
     EXPECT_NEAR(*std::max_element(eps1.begin(), eps1.end()), 0.001, 1e-12);
     EXPECT_NEAR(*std::min_element(eps1.begin(), eps1.end()), -0.001, 1e-12);
-    for (const RunWarning& w : runner.warnings()) {
+    for (const RunWarning& w : run.runner.warnings()) {
         EXPECT_NE(w.kind, "test_end") << w.text; // it made its cycles: nothing to state
     }
 
     // Resumed from a checkpoint in the middle of a cycle (on the unloading leg), it ends the same.
-    const Kept* middle = out.firstKept([&](const Kept& k) {
+    const Kept* middle = run.out.firstKept([&](const Kept& k) {
         return !k.runnerState.empty() && k.identity.kind == "cyclic" &&
                k.identity.axialStrain < 0.0009 && k.identity.axialStrain > -0.0009 &&
                k.identity.step > start + 2000;
     });
     ASSERT_NE(middle, nullptr);
-    MemoryOutput again;
-    ExperimentRunner resumed(config, out.resumeFrom(*middle), &again);
-    runAll(resumed);
-    EXPECT_EQ(resumed.series().back().rows, t.rows);
-    EXPECT_EQ(resumed.simulation().stateRef().grains.x1, runner.simulation().stateRef().grains.x1);
+    const KeptRun resumed(config, run.out.resumeFrom(*middle));
+    EXPECT_EQ(resumed.runner.series().back().rows, t.rows);
+    EXPECT_EQ(resumed.runner.simulation().stateRef().grains.x1,
+              run.runner.simulation().stateRef().grains.x1);
 }
 
 TEST(ExperimentRunnerStages, ALooseSampleCycledAtConstantVolumeStopsWhenItLosesItsPressure) {
     // Compacted with friction 0.5 (loose) and cycled by 0.01 % at constant volume: p' falls, and
     // the test stops at the first record below half of p0, long before its 50 cycles, saying why.
     // (Measured: after 2 reversals, p' 11.2 of 25 kPa.)
-    nlohmann::json j = test::smallQuickExperiment();
-    j["compaction"]["pressures"] = {25e3};
+    nlohmann::json j = test::smallQuickExperimentAt25kPa();
     j["compaction"]["friction"] = 0.5;
-    j["shear"]["pressures"] = {25e3};
     j["test"] = nlohmann::json::parse(R"({"kind": "cyclic", "drainage": "constant_volume",
         "amplitude": 0.0001, "cycles": 50, "stop_pressure_fraction": 0.5})");
     const ExperimentConfig config = parseExperimentText(j.dump(), "loose-cyclic.json");
@@ -570,20 +569,18 @@ TEST(ExperimentRunnerStages, ProbesStartFromOneStateBitForBitAndGiveAnEnvelope) 
     // Sixteen probes of 1e-5 after a drained test to 0.2 %, from where it ended.
     const ExperimentConfig config = withTests(nlohmann::json::parse(
         R"([{"kind": "drained"}, {"kind": "probes", "count": 16, "increment": 1e-5}])"));
-    MemoryOutput out;
-    ExperimentRunner runner(config, &out);
-    runAll(runner);
-    ASSERT_EQ(runner.series().size(), 3u);
-    const SeriesTable& t = runner.series().back();
+    const KeptRun run(config);
+    ASSERT_EQ(run.runner.series().size(), 3u);
+    const SeriesTable& t = run.runner.series().back();
     EXPECT_EQ(t.test, "p025kPa-probes");
     ASSERT_EQ(testRows(t).size(), 18u); // the start, the zero probe and one per probe
     // The start is where the drained test ended.
-    const SeriesTable& drained = runner.series()[1];
+    const SeriesTable& drained = run.runner.series()[1];
     EXPECT_EQ(column(t, testRows(t).front(), "sigma11"),
               column(drained, drained.rows.size() - 1, "sigma11"));
     // Every probe started from the same state, bit for bit (its checkpoint at its start).
     std::vector<const Kept*> starts;
-    for (const Kept& k : out.kept) {
+    for (const Kept& k : run.out.kept) {
         if (k.identity.kind == "probes" && !k.identity.peak && !k.runnerState.empty() &&
             !parseRunnerState(k.runnerState).stageDone) {
             starts.push_back(&k);
@@ -625,10 +622,8 @@ TEST(ExperimentRunnerStages, ProbesStartFromOneStateBitForBitAndGiveAnEnvelope) 
         broken.checkpointNow("interrupted");
         middle = &partial.kept.back();
         ASSERT_EQ(parseRunnerState(middle->runnerState).probe, 0);
-        MemoryOutput again;
-        ExperimentRunner resumed(config, partial.resumeFrom(*middle), &again);
-        runAll(resumed);
-        EXPECT_EQ(resumed.series().back().rows, t.rows);
+        const KeptRun resumed(config, partial.resumeFrom(*middle));
+        EXPECT_EQ(resumed.runner.series().back().rows, t.rows);
     }
 }
 
@@ -643,12 +638,10 @@ TEST(ExperimentRunnerStages, ProbesStartAtAStrainOrAtThePeakOfTheTestBeforeAndRe
         }
         const ExperimentConfig config =
             withTests(nlohmann::json::array({{{"kind", "drained"}}, probes}));
-        MemoryOutput out;
-        ExperimentRunner unbroken(config, &out);
-        runAll(unbroken);
-        ASSERT_EQ(unbroken.series().size(), 3u) << start;
-        const SeriesTable& drained = unbroken.series()[1];
-        const SeriesTable& t = unbroken.series()[2];
+        const KeptRun unbroken(config);
+        ASSERT_EQ(unbroken.runner.series().size(), 3u) << start;
+        const SeriesTable& drained = unbroken.runner.series()[1];
+        const SeriesTable& t = unbroken.runner.series()[2];
         ASSERT_EQ(testRows(t).size(), 10u) << start; // the start, the zero probe, 8 probes
         // The drained record the probes start from: at eps1 = 0.08 %, or of the largest q/p
         // (the first of equal maxima).
@@ -670,16 +663,14 @@ TEST(ExperimentRunnerStages, ProbesStartAtAStrainOrAtThePeakOfTheTestBeforeAndRe
         // Resumed from every checkpoint of the drained test and of the probes (in the middle,
         // at the test's end, at each probe's start), the probes give the same rows.
         int resumed = 0;
-        for (const Kept& k : out.kept) {
+        for (const Kept& k : unbroken.out.kept) {
             if (k.identity.peak || k.runnerState.empty() ||
                 (k.identity.kind != "shear" && k.identity.kind != "probes")) {
                 continue;
             }
-            MemoryOutput again;
-            ExperimentRunner from(config, out.resumeFrom(k), &again);
-            runAll(from);
-            ASSERT_EQ(from.series().size(), 3u) << start << " " << k.name;
-            EXPECT_EQ(from.series()[2].rows, t.rows) << start << " from " << k.name;
+            const KeptRun from(config, unbroken.out.resumeFrom(k));
+            ASSERT_EQ(from.runner.series().size(), 3u) << start << " " << k.name;
+            EXPECT_EQ(from.runner.series()[2].rows, t.rows) << start << " from " << k.name;
             ++resumed;
         }
         EXPECT_GE(resumed, 12) << start;
@@ -689,9 +680,7 @@ TEST(ExperimentRunnerStages, ProbesStartAtAStrainOrAtThePeakOfTheTestBeforeAndRe
 TEST(ExperimentRunnerStages, AtSmallIncrementsProbesOfAFrictionlessSampleAreElastic) {
     // Frictionless, first in the list (the re-equilibrated isotropic sample), increments of 1e-6:
     // opposite inputs give opposite responses and the envelope is an ellipse about the origin.
-    nlohmann::json j = test::smallQuickExperiment();
-    j["compaction"]["pressures"] = {25e3};
-    j["shear"]["pressures"] = {25e3};
+    nlohmann::json j = test::smallQuickExperimentAt25kPa();
     j["shear"]["friction"] = 0.0;
     j["test"] = nlohmann::json::parse(R"({"kind": "probes", "count": 16, "increment": 1e-6})");
     const ExperimentConfig config = parseExperimentText(j.dump(), "elastic-probes.json");
@@ -710,10 +699,8 @@ TEST(ExperimentRunnerStages, AStressControlledCyclicTestReversesWithinOneRecordO
     // record past a bound.
     const ExperimentConfig config = withTests(nlohmann::json::parse(
         R"({"kind": "cyclic", "control": "stress", "amplitude": 3000, "cycles": 2})"));
-    MemoryOutput out;
-    ExperimentRunner runner(config, &out);
-    runAll(runner);
-    const SeriesTable& t = runner.series().back();
+    const KeptRun run(config);
+    const SeriesTable& t = run.runner.series().back();
     const auto rows = testRows(t);
     std::vector<double> eps1, q;
     for (std::size_t r : rows) {
@@ -735,19 +722,17 @@ TEST(ExperimentRunnerStages, AStressControlledCyclicTestReversesWithinOneRecordO
     // It ends at the record where q passes the upper bound a third time.
     EXPECT_GE(q.back(), 3000.0);
     EXPECT_LT(q[q.size() - 2], 3000.0);
-    for (const RunWarning& w : runner.warnings()) {
+    for (const RunWarning& w : run.runner.warnings()) {
         EXPECT_NE(w.kind, "test_end") << w.text;
     }
     // Resumed from a checkpoint after its first reversal, it ends the same.
-    const Kept* middle = out.firstKept([&](const Kept& k) {
+    const Kept* middle = run.out.firstKept([&](const Kept& k) {
         return k.identity.kind == "cyclic" && !k.runnerState.empty() &&
                parseRunnerState(k.runnerState).cyclicReversals == 1;
     });
     ASSERT_NE(middle, nullptr);
-    MemoryOutput again;
-    ExperimentRunner resumed(config, out.resumeFrom(*middle), &again);
-    runAll(resumed);
-    EXPECT_EQ(resumed.series().back().rows, t.rows);
+    const KeptRun resumed(config, run.out.resumeFrom(*middle));
+    EXPECT_EQ(resumed.runner.series().back().rows, t.rows);
 
     // A bound the sample cannot reach: the strain runs on until stop_strain_amplitude stops it.
     const ExperimentConfig unreachable = withTests(nlohmann::json::parse(

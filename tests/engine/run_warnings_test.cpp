@@ -186,9 +186,7 @@ TEST(RunWarnings, AStageThatJittersPastTheStableStepNamesTheTimeStep) {
     // The guard loosened (one contact assumed on the stiffest grain instead of six), a step
     // twice the usual estimate: above every limit the maps measured for these ovals, so the
     // compacted packing jitters and its I_uf keeps a floor instead of calming.
-    nlohmann::json j = test::smallQuickExperiment();
-    j["compaction"]["pressures"] = {25e3};
-    j["shear"]["pressures"] = {25e3};
+    nlohmann::json j = test::smallQuickExperimentAt25kPa();
     const ExperimentConfig usual = parseExperimentText(j.dump(), "usual.json");
     const double estimate =
         criticalTimeStep(assemblyShapes(usual.assembly), usual.parameters).estimate;
@@ -206,11 +204,9 @@ TEST(RunWarnings, AStageThatJittersPastTheStableStepNamesTheTimeStep) {
 }
 
 TEST(RunWarnings, AStageCutShortWhileCalmingAdvisesMoreSteps) {
-    nlohmann::json j = test::smallQuickExperiment();
     // The loose grid's compaction at 25 kPa jams after some 35 000 steps and calms by about
     // 65 000: cut at 20 000 it is still gathering, cut at 45 000 its I_uf is still falling.
-    j["compaction"]["pressures"] = {25e3};
-    j["shear"]["pressures"] = {25e3};
+    nlohmann::json j = test::smallQuickExperimentAt25kPa();
     j["compaction"]["criterion"]["max_steps"] = 20000;
     std::string error = stageFailure(parseExperimentText(j.dump(), "gathering.json"));
     EXPECT_NE(error.find("the stress is still far from its target"), std::string::npos) << error;
