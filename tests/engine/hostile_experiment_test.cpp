@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -56,6 +57,17 @@ void expectRefused(const Json& j, const std::string& keyPath,
     expectRefusedText(j.dump(2), keyPath, fragments);
 }
 
+/// The minimal experiment with its grains' size classes given as `widths` (instead of
+/// width_min, width_max and size_classes).
+Json withWidths(const std::vector<double>& widths) {
+    Json j = minimalExperiment();
+    j["grains"].erase("width_min");
+    j["grains"].erase("width_max");
+    j["grains"].erase("size_classes");
+    j["grains"]["widths"] = widths;
+    return j;
+}
+
 TEST(HostileExperiment, ALateralServoSlowerThanTheAxialLoadingIsRefused) {
     // 1e-6 per step at dt = 1e-6 s is 1 /s axially: a dilating sample needs a lateral cap of
     // at least 2 /s.
@@ -105,12 +117,8 @@ TEST(HostileExperiment, SizeClassesAreBounded) {
     Json j = minimalExperiment();
     j["grains"]["size_classes"] = 100000000;
     expectRefused(j, "grains.size_classes", {"grains.size_classes", "[1, 50]"});
-    j = minimalExperiment();
-    j["grains"].erase("width_min");
-    j["grains"].erase("width_max");
-    j["grains"].erase("size_classes");
-    j["grains"]["widths"] = std::vector<double>(51, 1e-3);
-    expectRefused(j, "grains.widths", {"grains.widths", "at most 50"});
+    expectRefused(withWidths(std::vector<double>(51, 1e-3)), "grains.widths",
+                  {"grains.widths", "at most 50"});
 }
 
 TEST(HostileExperiment, DerivedQuantitiesMustBeFinite) {
@@ -122,12 +130,7 @@ TEST(HostileExperiment, DerivedQuantitiesMustBeFinite) {
     j = minimalExperiment();
     j["grains"]["width_max"] = 1e308;
     expectRefused(j, "grains.width_max", {"grains.width_max = 1e+308", "1000"});
-    j = minimalExperiment();
-    j["grains"].erase("width_min");
-    j["grains"].erase("width_max");
-    j["grains"].erase("size_classes");
-    j["grains"]["widths"] = {1e-3, 1e-300};
-    expectRefused(j, "grains.widths[1]", {"grains.widths[1]", "1e-09"});
+    expectRefused(withWidths({1e-3, 1e-300}), "grains.widths[1]", {"grains.widths[1]", "1e-09"});
 }
 
 TEST(HostileExperiment, BytesAfterANulAreRefusedWithItsPosition) {

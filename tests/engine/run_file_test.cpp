@@ -420,41 +420,46 @@ TEST(CsvSeries, NumbersRoundTripAndStagesAreQuoted) {
     expectSameSeries(readSeriesCsv(path), t);
 }
 
-TEST(CsvSeries, AppenderWritesOnlyNewRowsAndMirrorsTheTable) {
+/// A scratch series.csv whose appender has written the sample series' first three rows.
+struct AppendedSeries {
+    AppendedSeries() { appender.append(t); }
+    /// Adds a shear row at step 3000 with eps1 = `eps1` to the table (not yet written).
+    void addShearRow(double eps1) {
+        t.rows.push_back({3000, 0.003, eps1, 15000});
+        t.stages.push_back("shear 15 kPa");
+    }
+
     ScratchDir dir;
     const std::string path = dir.file("series.csv");
-    CsvSeriesAppender appender(path);
+    CsvSeriesAppender appender{path};
     SeriesTable t = sampleSeries("p15kPa", 3);
-    appender.append(t);
-    const std::string first = slurp(path);
-    t.rows.push_back({3000, 0.003, 0.1, 15000});
-    t.stages.push_back("shear 15 kPa");
-    appender.append(t);
-    const std::string second = slurp(path);
+};
+
+TEST(CsvSeries, AppenderWritesOnlyNewRowsAndMirrorsTheTable) {
+    AppendedSeries s;
+    const std::string first = slurp(s.path);
+    s.addShearRow(0.1);
+    s.appender.append(s.t);
+    const std::string second = slurp(s.path);
     EXPECT_EQ(second.substr(0, first.size()), first); // appended, not rewritten
     EXPECT_EQ(second.substr(first.size()), "3000,0.003,shear 15 kPa,0.1,15000\n");
-    EXPECT_EQ(appender.rowsWritten(), 4u);
+    EXPECT_EQ(s.appender.rowsWritten(), 4u);
     // A resumed run rewound to two rows: the file follows the table.
-    appender.append(sampleSeries("p15kPa", 2));
-    EXPECT_EQ(readSeriesCsv(path).rows.size(), 2u);
+    s.appender.append(sampleSeries("p15kPa", 2));
+    EXPECT_EQ(readSeriesCsv(s.path).rows.size(), 2u);
 }
 
 TEST(CsvSeries, NonFiniteValueIsRefusedNamingTheColumn) {
-    ScratchDir dir;
-    const std::string path = dir.file("series.csv");
-    CsvSeriesAppender appender(path);
-    SeriesTable t = sampleSeries("p15kPa", 3);
-    appender.append(t);
-    t.rows.push_back({3000, 0.003, std::numeric_limits<double>::quiet_NaN(), 15000});
-    t.stages.push_back("shear 15 kPa");
+    AppendedSeries s;
+    s.addShearRow(std::numeric_limits<double>::quiet_NaN());
     try {
-        appender.append(t);
+        s.appender.append(s.t);
         FAIL() << "wrote a NaN";
     } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("eps1"), std::string::npos) << e.what();
     }
-    EXPECT_EQ(readSeriesCsv(path).rows.size(), 3u);
-    EXPECT_THROW(writeSeriesCsv(t, dir.file("whole.csv")), std::runtime_error);
+    EXPECT_EQ(readSeriesCsv(s.path).rows.size(), 3u);
+    EXPECT_THROW(writeSeriesCsv(s.t, s.dir.file("whole.csv")), std::runtime_error);
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 // setting inside both is accepted.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -29,6 +30,21 @@ std::string refusal(const Json& j, std::string* keyPath = nullptr) {
     return "";
 }
 
+/// `j` is refused at `key` with a message naming the file (servo.json) and each of `words`;
+/// when it is accepted, a fatal failure says `ifAccepted`. Call it within
+/// ASSERT_NO_FATAL_FAILURE.
+void expectRefusedAt(const Json& j, const std::string& key, const std::vector<std::string>& words,
+                     const std::string& ifAccepted) {
+    std::string keyPath;
+    const std::string what = refusal(j, &keyPath);
+    ASSERT_FALSE(what.empty()) << ifAccepted;
+    EXPECT_EQ(keyPath, key);
+    EXPECT_NE(what.find("servo.json"), std::string::npos) << what;
+    for (const std::string& word : words) {
+        EXPECT_NE(what.find(word), std::string::npos) << what;
+    }
+}
+
 TEST(ServoGuard, TheGainBoundKeepsAMarginBelowTheMeasuredLimit) {
     EXPECT_LT(kMaxServoGain, kMeasuredServoGainLimit);
     // The affine estimate over-predicts the packing's modulus (r = E / E_hat <= 1), so up to
@@ -39,14 +55,11 @@ TEST(ServoGuard, TheGainBoundKeepsAMarginBelowTheMeasuredLimit) {
 TEST(ServoGuard, AGainPastTheMeasuredLimitIsRefusedWithTheLimitNamed) {
     Json j = test::minimalExperiment();
     j["servo"] = {{"gain", kMeasuredServoGainLimit * 1.1}};
-    std::string key;
-    const std::string what = refusal(j, &key);
-    ASSERT_FALSE(what.empty()) << "a gain past the measured limit was accepted";
-    EXPECT_EQ(key, "servo.gain");
-    EXPECT_NE(what.find("servo.json"), std::string::npos) << what;
-    EXPECT_NE(what.find(fmt::format("(0, {}]", kMaxServoGain)), std::string::npos) << what;
-    EXPECT_NE(what.find(fmt::format("g = {}", kMeasuredServoGainLimit)), std::string::npos) << what;
-    EXPECT_NE(what.find("docs/stability.md"), std::string::npos) << what;
+    ASSERT_NO_FATAL_FAILURE(
+        expectRefusedAt(j, "servo.gain",
+                        {fmt::format("(0, {}]", kMaxServoGain),
+                         fmt::format("g = {}", kMeasuredServoGainLimit), "docs/stability.md"},
+                        "a gain past the measured limit was accepted"));
 
     // Just past the bound is refused too; the bound itself and the default are accepted.
     j["servo"] = {{"gain", std::nextafter(kMaxServoGain, 2 * kMaxServoGain)}};
@@ -68,15 +81,10 @@ TEST(ServoGuard, AnIntervalPastTheMeasuredLagLineIsRefusedWithItsRange) {
     j["servo"] = {{"interval", largest}};
     EXPECT_EQ(refusal(j), "");
     j["servo"] = {{"interval", largest + 1}};
-    std::string key;
-    const std::string what = refusal(j, &key);
-    ASSERT_FALSE(what.empty()) << "an interval past the measured line was accepted";
-    EXPECT_EQ(key, "servo.interval");
-    EXPECT_NE(what.find("servo.json"), std::string::npos) << what;
-    EXPECT_NE(what.find(fmt::format("[1, {}]", largest)), std::string::npos) << what;
-    EXPECT_NE(what.find("1 % band"), std::string::npos) << what;
-    EXPECT_NE(what.find(fmt::format("from {} on", kMeasuredServoLagPerGain)), std::string::npos)
-        << what;
+    ASSERT_NO_FATAL_FAILURE(expectRefusedAt(j, "servo.interval",
+                                            {fmt::format("[1, {}]", largest), "1 % band",
+                                             fmt::format("from {} on", kMeasuredServoLagPerGain)},
+                                            "an interval past the measured line was accepted"));
     // The line scales with the loading and the gain: a gain three times larger, or a loading
     // three times slower, allows three times the interval.
     j["servo"] = {{"interval", 3 * largest}, {"gain", 0.9}};
