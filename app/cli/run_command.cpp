@@ -107,7 +107,7 @@ std::string experimentRemedy(const std::exception& e) {
 
 /// Where this process's time went (the run's sums over its processes are in cost.json).
 void printTimes(const RunnerTimes& t) {
-    const double total = t.stepping + t.records + t.checkpoints + t.events;
+    const double total = t.total();
     if (!(total > 0.0)) {
         return;
     }

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include <sys/resource.h>
 
@@ -13,6 +14,23 @@
 #include "common/atomic_file.h"
 
 namespace grainlab {
+
+namespace {
+
+/// Calls `field(name, member)` for each top-level value of cost.json, in the file's order
+/// ("seconds", the RunnerTimes parts, follows them).
+template <typename Record, typename Field>
+void forEachCostField(Record& c, Field&& field) {
+    field("finished", c.finished);
+    field("wall_seconds", c.wallSeconds);
+    field("cpu_seconds", c.cpuSeconds);
+    field("steps", c.steps);
+    field("grain_steps", c.grainSteps);
+    field("threads", c.threads);
+    field("processes", c.processes);
+}
+
+} // namespace
 
 std::string runCostPath(const std::string& runFolder) {
     return (std::filesystem::path(runFolder) / "cost.json").string();
@@ -29,17 +47,14 @@ RunCostRecord readRunCost(const std::string& runFolder) {
     text << in.rdbuf();
     try {
         const auto j = nlohmann::json::parse(text.str());
-        c.finished = j.at("finished").get<bool>();
-        c.wallSeconds = j.at("wall_seconds").get<double>();
-        c.cpuSeconds = j.at("cpu_seconds").get<double>();
-        c.steps = j.at("steps").get<std::int64_t>();
-        c.grainSteps = j.at("grain_steps").get<std::int64_t>();
-        c.threads = j.at("threads").get<int>();
-        c.processes = j.at("processes").get<int>();
+        forEachCostField(c, [&](const char* name, auto& value) {
+            value = j.at(name).template get<std::decay_t<decltype(value)>>();
+        });
         if (j.contains("seconds")) {
             const auto& t = j.at("seconds");
-            c.times = {t.at("stepping").get<double>(), t.at("records").get<double>(),
-                       t.at("checkpoints").get<double>(), t.at("events").get<double>()};
+            for (const RunnerTimesPart& part : kRunnerTimesParts) {
+                c.times.*part.seconds = t.at(part.name).get<double>();
+            }
         }
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error(fmt::format("{}: not a cost record: {}", path, e.what()));
@@ -49,18 +64,11 @@ RunCostRecord readRunCost(const std::string& runFolder) {
 
 void writeRunCost(const std::string& runFolder, const RunCostRecord& c) {
     nlohmann::ordered_json j;
-    j["finished"] = c.finished;
-    j["wall_seconds"] = c.wallSeconds;
-    j["cpu_seconds"] = c.cpuSeconds;
-    j["steps"] = c.steps;
-    j["grain_steps"] = c.grainSteps;
-    j["threads"] = c.threads;
-    j["processes"] = c.processes;
+    forEachCostField(c, [&](const char* name, const auto& value) { j[name] = value; });
     nlohmann::ordered_json t;
-    t["stepping"] = c.times.stepping;
-    t["records"] = c.times.records;
-    t["checkpoints"] = c.times.checkpoints;
-    t["events"] = c.times.events;
+    for (const RunnerTimesPart& part : kRunnerTimesParts) {
+        t[part.name] = c.times.*part.seconds;
+    }
     j["seconds"] = t;
     writeFileAtomically(runCostPath(runFolder), j.dump(2) + "\n");
 }
@@ -95,10 +103,7 @@ void RunCostMeter::save(const Work& work, bool finished) {
     c.grainSteps += work.steps * work.grains;
     c.threads = work.threads;
     c.processes += 1;
-    c.times.stepping += work.times.stepping;
-    c.times.records += work.times.records;
-    c.times.checkpoints += work.times.checkpoints;
-    c.times.events += work.times.events;
+    c.times += work.times;
     writeRunCost(folder_, c);
     lastSave_ = now;
 }

@@ -283,10 +283,9 @@ finished). A callback returning False stops the run (in a run folder: a checkpoi
             [](PyRunner& r) {
                 const RunnerTimes t = r.runner().times();
                 py::dict d;
-                d["stepping"] = t.stepping;
-                d["records"] = t.records;
-                d["checkpoints"] = t.checkpoints;
-                d["events"] = t.events;
+                for (const RunnerTimesPart& part : kRunnerTimesParts) {
+                    d[part.name] = t.*part.seconds;
+                }
                 return d;
             },
             "Where this runner's wall time has gone [s]: stepping, records, checkpoints and the "

@@ -9,6 +9,7 @@
 // Synchronous: advance() runs on the caller's thread (the GUI's worker thread, or the main
 // thread headless). snapshot() returns an immutable object that any thread may read.
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -68,7 +69,41 @@ int engineThreads(const ExperimentConfig& config);
 /// estimated: what a run spends beyond stepping is records + checkpoints + events.
 struct RunnerTimes {
     double stepping = 0, records = 0, checkpoints = 0, events = 0;
+
+    /// Adds each part of `other` to this one's.
+    RunnerTimes& operator+=(const RunnerTimes& other);
+    /// The parts summed: stepping + records + checkpoints + events.
+    double total() const;
 };
+
+/// One part of RunnerTimes, by the name cost.json's "seconds" and Python's Runner.times give it.
+struct RunnerTimesPart {
+    const char* name;
+    double RunnerTimes::*seconds;
+};
+
+/// RunnerTimes' parts in that order: what reads, writes, adds or sums them goes through this list.
+inline constexpr std::array<RunnerTimesPart, 4> kRunnerTimesParts{{
+    {"stepping", &RunnerTimes::stepping},
+    {"records", &RunnerTimes::records},
+    {"checkpoints", &RunnerTimes::checkpoints},
+    {"events", &RunnerTimes::events},
+}};
+
+inline RunnerTimes& RunnerTimes::operator+=(const RunnerTimes& other) {
+    for (const RunnerTimesPart& part : kRunnerTimesParts) {
+        this->*part.seconds += other.*part.seconds;
+    }
+    return *this;
+}
+
+inline double RunnerTimes::total() const {
+    double sum = 0;
+    for (const RunnerTimesPart& part : kRunnerTimesParts) {
+        sum += this->*part.seconds;
+    }
+    return sum;
+}
 
 class ExperimentRunner {
 public:
