@@ -21,11 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using test::freshFolder;
-using test::runStability;
-using test::runStabilityPreset;
-using test::stabilityPresetFile;
-using test::text;
+using namespace test;
 
 std::size_t rows(const std::string& csv) {
     return std::size_t(std::count(csv.begin(), csv.end(), '\n')) - 1;
@@ -39,7 +35,7 @@ TEST(ServoMapCommand, TinyMapEndToEndAndResumes) {
     ASSERT_EQ(cells.size(), 2u);
     fs::file_time_type first;
     for (const ServoCell& c : cells) {
-        const fs::path file = dir / "cells" / (c.id + ".json");
+        const fs::path file = cellFile(dir, c.id);
         ASSERT_TRUE(fs::exists(file)) << file;
         const ServoCellResult r = parseServoCellResult(text(file), file.string());
         ASSERT_GE(r.runs.size(), spec.gains.size()) << c.id;
@@ -67,15 +63,13 @@ TEST(ServoMapCommand, TinyMapEndToEndAndResumes) {
     const std::string runs = text(dir / "servo_runs.csv");
     EXPECT_NE(runs.find("max_error [-]"), std::string::npos);
     EXPECT_NE(runs.find(",bisection,"), std::string::npos);
-#ifdef GRAINLAB_WITH_GUI
-    EXPECT_TRUE(fs::exists(dir / "figures" / "response_eta1_p15kPa.svg"));
-    EXPECT_TRUE(fs::exists(dir / "figures" / "stable_gain.png"));
-#endif
+    EXPECT_EQ(missingFigures(dir, {"response_eta1_p15kPa.svg", "stable_gain.png"}),
+              std::vector<std::string>{});
     // Resumes: only a removed cell runs again.
-    fs::remove(dir / "cells" / (cells[1].id + ".json"));
+    fs::remove(cellFile(dir, cells[1].id));
     ASSERT_EQ(runStabilityPreset("servo-tiny", dir), 0);
-    EXPECT_TRUE(fs::exists(dir / "cells" / (cells[1].id + ".json")));
-    EXPECT_EQ(fs::last_write_time(dir / "cells" / (cells[0].id + ".json")), first);
+    EXPECT_TRUE(fs::exists(cellFile(dir, cells[1].id)));
+    EXPECT_EQ(fs::last_write_time(cellFile(dir, cells[0].id)), first);
     EXPECT_EQ(runStability("collect " + dir.string() + " --quiet"), 0);
     // The emitted job list names the servo cells.
     ASSERT_EQ(runStabilityPreset("servo-tiny", dir, "--emit parallel"), 0);
@@ -92,9 +86,7 @@ TEST(GeometryMapCommand, TinyMapEndToEnd) {
     const std::string limits = text(dir / "geometry_limits.csv");
     EXPECT_NE(limits.find("0.6,engine,no,"), std::string::npos) << limits;
     EXPECT_EQ(limits.find("nan"), std::string::npos);
-#ifdef GRAINLAB_WITH_GUI
-    EXPECT_TRUE(fs::exists(dir / "figures" / "departure.svg"));
-#endif
+    EXPECT_EQ(missingFigures(dir, {"departure.svg"}), std::vector<std::string>{});
     // One process: nothing to emit, no cells to collect.
     EXPECT_NE(runStabilityPreset("geometry-tiny", dir, "--emit slurm"), 0);
     EXPECT_NE(runStability("collect " + dir.string()), 0);

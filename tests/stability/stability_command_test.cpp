@@ -22,11 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using test::freshFolder;
-using test::runStability;
-using test::runStabilityPreset;
-using test::stabilityPresetFile;
-using test::text;
+using namespace test;
 const auto run = test::runQuietly;
 
 TEST(StabilityCommand, TinyMapEndToEndAndResumes) {
@@ -37,7 +33,7 @@ TEST(StabilityCommand, TinyMapEndToEndAndResumes) {
     ASSERT_EQ(cells.size(), 4u);
     std::map<std::string, fs::file_time_type> written;
     for (const StabilityCell& c : cells) {
-        const fs::path file = dir / "cells" / (c.id + ".json");
+        const fs::path file = cellFile(dir, c.id);
         ASSERT_TRUE(fs::exists(file)) << file;
         written[c.id] = fs::last_write_time(file);
         const StabilityCellResult r = parseCellResult(text(file), file.string());
@@ -63,17 +59,16 @@ TEST(StabilityCommand, TinyMapEndToEndAndResumes) {
     }
     EXPECT_EQ(rows, 4);
     EXPECT_TRUE(fs::exists(dir / "accuracy.csv"));
-#ifdef GRAINLAB_WITH_GUI
-    EXPECT_TRUE(fs::exists(dir / "figures" / "limit_aspect_ratio_packing.svg"));
-    EXPECT_TRUE(fs::exists(dir / "figures" / "ratio_aspect_ratio_packing.png"));
-#endif
+    EXPECT_EQ(
+        missingFigures(dir, {"limit_aspect_ratio_packing.svg", "ratio_aspect_ratio_packing.png"}),
+        std::vector<std::string>{});
 
     // Killed or finished, the same command redoes no finished cell: remove one result, and only
     // that cell runs again.
-    fs::remove(dir / "cells" / (cells[1].id + ".json"));
+    fs::remove(cellFile(dir, cells[1].id));
     ASSERT_EQ(runStabilityPreset("tiny", dir), 0);
     for (const StabilityCell& c : cells) {
-        const auto now = fs::last_write_time(dir / "cells" / (c.id + ".json"));
+        const auto now = fs::last_write_time(cellFile(dir, c.id));
         if (c.id == cells[1].id) {
             EXPECT_NE(now, written[c.id]);
         } else {
@@ -83,7 +78,7 @@ TEST(StabilityCommand, TinyMapEndToEndAndResumes) {
     EXPECT_EQ(runStability("collect " + dir.string() + " --quiet"), 0);
     // A cell run again by hand (a resubmitted array task) finds its result and does nothing.
     ASSERT_EQ(runStability("cell " + dir.string() + " --cell " + cells[0].id), 0);
-    EXPECT_EQ(fs::last_write_time(dir / "cells" / (cells[0].id + ".json")), written[cells[0].id]);
+    EXPECT_EQ(fs::last_write_time(cellFile(dir, cells[0].id)), written[cells[0].id]);
     fs::remove_all(dir);
 }
 

@@ -57,6 +57,29 @@ inline std::string stabilityPresetFile(const std::string& name) {
     return std::string(GRAINLAB_SOURCE_DIR) + "/resources/stability/" + name + ".json";
 }
 
+/// The result file of the cell `id` in the map folder `dir`.
+inline std::filesystem::path cellFile(const std::filesystem::path& dir, const std::string& id) {
+    return dir / "cells" / (id + ".json");
+}
+
+/// Those of the figures `names` that are not in the folder `dir`/figures. A build without the
+/// window draws no figures: then none is missing.
+inline std::vector<std::string> missingFigures(const std::filesystem::path& dir,
+                                               const std::vector<std::string>& names) {
+    std::vector<std::string> missing;
+#ifdef GRAINLAB_WITH_GUI
+    for (const std::string& name : names) {
+        if (!std::filesystem::exists(dir / "figures" / name)) {
+            missing.push_back(name);
+        }
+    }
+#else
+    (void)dir;
+    (void)names;
+#endif
+    return missing;
+}
+
 /// The pids of the processes whose parent is `parent` (from /proc).
 inline std::vector<pid_t> childrenOf(pid_t parent) {
     std::vector<pid_t> out;
