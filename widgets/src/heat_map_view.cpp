@@ -1,7 +1,6 @@
 // See heat_map_view.h.
 #include "grainlab/ui/heat_map_view.h"
 
-#include <QMouseEvent>
 #include <QPainter>
 
 namespace grainlab::ui {
@@ -11,11 +10,7 @@ const QPoint kNoCell(-1, -1);
 
 } // namespace
 
-HeatMapView::HeatMapView(QWidget* parent) : QWidget(parent) {
-    setMouseTracking(true);
-    setMinimumSize(320, 240);
-    setAttribute(Qt::WA_OpaquePaintEvent);
-}
+HeatMapView::HeatMapView(QWidget* parent) : ItemPointerView(parent, kNoCell) {}
 
 void HeatMapView::setMap(HeatMapPainter map) {
     map_ = std::move(map);
@@ -51,14 +46,6 @@ void HeatMapView::setSelectedCell(QPoint cell) {
     }
 }
 
-QImage HeatMapView::render() const {
-    QImage image(size(), QImage::Format_ARGB32);
-    image.fill(Qt::white);
-    QPainter painter(&image);
-    paintInto(painter);
-    return image;
-}
-
 void HeatMapView::paintInto(QPainter& painter) const {
     map_.paint(painter, mapRect());
     if (selected_ != kNoCell) {
@@ -68,39 +55,6 @@ void HeatMapView::paintInto(QPainter& painter) const {
         painter.setPen(QPen(Qt::black, 3));
         painter.setBrush(Qt::NoBrush);
         painter.drawRect(c);
-    }
-}
-
-void HeatMapView::paintEvent(QPaintEvent*) {
-    QPainter painter(this);
-    paintInto(painter);
-}
-
-void HeatMapView::mouseMoveEvent(QMouseEvent* event) {
-    setHovered(cellAt(event->position()));
-    QWidget::mouseMoveEvent(event);
-}
-
-void HeatMapView::mousePressEvent(QMouseEvent* event) {
-    if (event->button() == Qt::LeftButton) {
-        const QPoint c = cellAt(event->position());
-        if (c != kNoCell) {
-            emit cellClicked(c);
-            return;
-        }
-    }
-    QWidget::mousePressEvent(event);
-}
-
-void HeatMapView::leaveEvent(QEvent* event) {
-    setHovered(kNoCell);
-    QWidget::leaveEvent(event);
-}
-
-void HeatMapView::setHovered(QPoint cell) {
-    if (cell != hovered_) {
-        hovered_ = cell;
-        emit cellHovered(cell);
     }
 }
 

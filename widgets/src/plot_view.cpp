@@ -1,17 +1,11 @@
 // See plot_view.h.
 #include "grainlab/ui/plot_view.h"
 
-#include <QImage>
-#include <QMouseEvent>
 #include <QPainter>
 
 namespace grainlab::ui {
 
-PlotView::PlotView(QWidget* parent) : QWidget(parent) {
-    setMouseTracking(true);
-    setMinimumSize(320, 240);
-    setAttribute(Qt::WA_OpaquePaintEvent);
-}
+PlotView::PlotView(QWidget* parent) : ItemPointerView(parent, -1) {}
 
 void PlotView::setPlot(PlotPainter plot) {
     plot_ = std::move(plot);
@@ -22,48 +16,10 @@ void PlotView::setPlot(PlotPainter plot) {
     update();
 }
 
-QImage PlotView::render() const {
-    QImage image(size(), QImage::Format_ARGB32);
-    image.fill(Qt::white);
-    QPainter painter(&image);
-    painter.setRenderHint(QPainter::Antialiasing);
-    plot_.paint(painter, plotRect());
-    return image;
-}
-
-void PlotView::paintEvent(QPaintEvent*) {
-    QPainter painter(this);
+void PlotView::paintInto(QPainter& painter) const {
     painter.fillRect(rect(), Qt::white);
     painter.setRenderHint(QPainter::Antialiasing);
     plot_.paint(painter, plotRect());
-}
-
-void PlotView::mouseMoveEvent(QMouseEvent* event) {
-    setHovered(plot_.pointAt(event->position(), plotRect()));
-    QWidget::mouseMoveEvent(event);
-}
-
-void PlotView::mousePressEvent(QMouseEvent* event) {
-    if (event->button() == Qt::LeftButton) {
-        const int k = plot_.pointAt(event->position(), plotRect());
-        if (k >= 0) {
-            emit pointClicked(k);
-            return;
-        }
-    }
-    QWidget::mousePressEvent(event);
-}
-
-void PlotView::leaveEvent(QEvent* event) {
-    setHovered(-1);
-    QWidget::leaveEvent(event);
-}
-
-void PlotView::setHovered(int index) {
-    if (index != hovered_) {
-        hovered_ = index;
-        emit pointHovered(index);
-    }
 }
 
 } // namespace grainlab::ui

@@ -4,15 +4,14 @@
 // is given and reports which cell is under the pointer; what a cell means is the caller's
 // business. GUI thread.
 
-#include <QImage>
 #include <QPoint>
-#include <QWidget>
 
 #include "grainlab/ui/heat_map_painter.h"
+#include "grainlab/ui/pointer_view.h"
 
 namespace grainlab::ui {
 
-class HeatMapView : public QWidget {
+class HeatMapView : public ItemPointerView<QPoint> {
     Q_OBJECT
 public:
     explicit HeatMapView(QWidget* parent = nullptr);
@@ -28,8 +27,6 @@ public:
     /// Outlines cell (column, row); (-1, -1): none.
     void setSelectedCell(QPoint cell);
     QPoint selectedCell() const { return selected_; }
-    /// The map as drawn at the widget's size.
-    QImage render() const;
 
 signals:
     /// The pointer moved onto cell (column, row), or off the grid ((-1, -1)).
@@ -38,17 +35,13 @@ signals:
     void cellClicked(QPoint cell);
 
 protected:
-    void paintEvent(QPaintEvent* event) override;
-    void mouseMoveEvent(QMouseEvent* event) override;
-    void mousePressEvent(QMouseEvent* event) override;
-    void leaveEvent(QEvent* event) override;
+    void paintInto(QPainter& painter) const override;
+    QPoint itemAt(QPointF position) const override { return cellAt(position); }
+    void hoveredChanged(QPoint cell) override { emit cellHovered(cell); }
+    void itemClicked(QPoint cell) override { emit cellClicked(cell); }
 
 private:
-    void paintInto(QPainter& painter) const;
-    void setHovered(QPoint cell);
-
     HeatMapPainter map_;
-    QPoint hovered_{-1, -1};
     QPoint selected_{-1, -1};
 };
 

@@ -3,13 +3,12 @@
 // its points: the Study window's error-against-cost chart. It draws what it is given and reports
 // which point is under the pointer; what a point means is the caller's business. GUI thread.
 
-#include <QWidget>
-
 #include "grainlab/ui/plot_painter.h"
+#include "grainlab/ui/pointer_view.h"
 
 namespace grainlab::ui {
 
-class PlotView : public QWidget {
+class PlotView : public ItemPointerView<int> {
     Q_OBJECT
 public:
     explicit PlotView(QWidget* parent = nullptr);
@@ -20,8 +19,6 @@ public:
     QRectF plotRect() const { return QRectF(rect()); }
     /// The point under the pointer, or -1.
     int hoveredPoint() const { return hovered_; }
-    /// The plot as drawn at the widget's size.
-    QImage render() const;
 
 signals:
     /// The pointer moved onto point `index` of plot(), or off every point (-1).
@@ -30,16 +27,13 @@ signals:
     void pointClicked(int index);
 
 protected:
-    void paintEvent(QPaintEvent* event) override;
-    void mouseMoveEvent(QMouseEvent* event) override;
-    void mousePressEvent(QMouseEvent* event) override;
-    void leaveEvent(QEvent* event) override;
+    void paintInto(QPainter& painter) const override;
+    int itemAt(QPointF position) const override { return plot_.pointAt(position, plotRect()); }
+    void hoveredChanged(int index) override { emit pointHovered(index); }
+    void itemClicked(int index) override { emit pointClicked(index); }
 
 private:
-    void setHovered(int index);
-
     PlotPainter plot_;
-    int hovered_ = -1;
 };
 
 } // namespace grainlab::ui
