@@ -35,20 +35,6 @@ QString presetsFolder() {
     return QString::fromStdString(resourcePath("stability"));
 }
 
-QString axisText(StabilityAxis axis) {
-    switch (axis) {
-    case StabilityAxis::AspectRatio:
-        return QObject::tr("aspect ratio η");
-    case StabilityAxis::StiffnessRatio:
-        return QObject::tr("stiffness ratio k_t/k_n");
-    case StabilityAxis::Damping:
-        return QObject::tr("damping");
-    case StabilityAxis::Packing:
-        return QObject::tr("packing state");
-    }
-    return {};
-}
-
 std::size_t valuesOn(const StabilityMapSpec& spec, StabilityAxis axis) {
     switch (axis) {
     case StabilityAxis::AspectRatio:
@@ -62,9 +48,6 @@ std::size_t valuesOn(const StabilityMapSpec& spec, StabilityAxis axis) {
     }
     return 0;
 }
-
-constexpr StabilityAxis kAxes[] = {StabilityAxis::AspectRatio, StabilityAxis::StiffnessRatio,
-                                   StabilityAxis::Damping, StabilityAxis::Packing};
 
 /// The value a square of the heat map draws for `r` (stability_figures.cpp), NaN for none.
 double shownValue(const StabilityCellResult& r, StabilityValue value) {
@@ -120,9 +103,9 @@ StabilityView::StabilityView(QWidget* parent, QString grainlab)
 
     xAxis_ = new QComboBox;
     yAxis_ = new QComboBox;
-    for (StabilityAxis a : kAxes) {
-        xAxis_->addItem(axisText(a), int(a));
-        yAxis_->addItem(axisText(a), int(a));
+    for (StabilityAxis a : kStabilityAxes) {
+        xAxis_->addItem(stabilityAxisTitle(a, true), int(a));
+        yAxis_->addItem(stabilityAxisTitle(a, true), int(a));
     }
     xAxis_->setCurrentIndex(lastX_);
     yAxis_->setCurrentIndex(lastY_);
@@ -350,12 +333,12 @@ void StabilityView::scanned(std::shared_ptr<const StabilityFolder> state) {
     if (newMap) {
         // The first two axes with more than one value, then the others in order.
         std::vector<StabilityAxis> order;
-        for (StabilityAxis a : kAxes) {
+        for (StabilityAxis a : kStabilityAxes) {
             if (valuesOn(state_->spec, a) > 1) {
                 order.push_back(a);
             }
         }
-        for (StabilityAxis a : kAxes) {
+        for (StabilityAxis a : kStabilityAxes) {
             if (valuesOn(state_->spec, a) <= 1) {
                 order.push_back(a);
             }
@@ -478,8 +461,8 @@ void StabilityView::showSquare(QPoint square) {
         return;
     }
     const QString where = QStringLiteral("%1 = %2, %3 = %4")
-                              .arg(axisText(xAxis()), map.xLabels[square.x()], axisText(yAxis()),
-                                   map.yLabels[square.y()])
+                              .arg(stabilityAxisTitle(xAxis(), true), map.xLabels[square.x()],
+                                   stabilityAxisTitle(yAxis(), true), map.yLabels[square.y()])
                               .toHtmlEscaped();
     const std::vector<int> cells = resultsInSquare(square);
     if (cells.empty()) {

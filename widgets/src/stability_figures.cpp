@@ -67,34 +67,31 @@ int indexOn(const StabilityMapSpec& spec, StabilityAxis axis, const StabilityCel
     return -1;
 }
 
-QString axisTitle(StabilityAxis axis) {
-    switch (axis) {
-    case StabilityAxis::AspectRatio:
-        return QObject::tr("aspect ratio η = H/W");
-    case StabilityAxis::StiffnessRatio:
-        return QObject::tr("stiffness ratio k_t / k_n");
-    case StabilityAxis::Damping:
-        return QObject::tr("damping");
-    case StabilityAxis::Packing:
-        return QObject::tr("packing state");
-    }
-    return {};
-}
+/// An axis's names, in StabilityAxis order: in file names, as a figure's title, and brief.
+struct AxisNames {
+    const char* name;
+    const char* title;
+    const char* brief;
+};
+constexpr AxisNames kAxisNames[] = {
+    {"aspect_ratio", QT_TRANSLATE_NOOP("QObject", "aspect ratio η = H/W"),
+     QT_TRANSLATE_NOOP("QObject", "aspect ratio η")},
+    {"stiffness_ratio", QT_TRANSLATE_NOOP("QObject", "stiffness ratio k_t / k_n"),
+     QT_TRANSLATE_NOOP("QObject", "stiffness ratio k_t/k_n")},
+    {"damping", QT_TRANSLATE_NOOP("QObject", "damping"), QT_TRANSLATE_NOOP("QObject", "damping")},
+    {"packing", QT_TRANSLATE_NOOP("QObject", "packing state"),
+     QT_TRANSLATE_NOOP("QObject", "packing state")},
+};
 
 } // namespace
 
 QString stabilityAxisName(StabilityAxis axis) {
-    switch (axis) {
-    case StabilityAxis::AspectRatio:
-        return "aspect_ratio";
-    case StabilityAxis::StiffnessRatio:
-        return "stiffness_ratio";
-    case StabilityAxis::Damping:
-        return "damping";
-    case StabilityAxis::Packing:
-        return "packing";
-    }
-    return {};
+    return kAxisNames[int(axis)].name;
+}
+
+QString stabilityAxisTitle(StabilityAxis axis, bool brief) {
+    const AxisNames& names = kAxisNames[int(axis)];
+    return QObject::tr(brief ? names.brief : names.title);
 }
 
 HeatMapPainter stabilityHeatMap(const StabilityMapSpec& spec,
@@ -103,8 +100,8 @@ HeatMapPainter stabilityHeatMap(const StabilityMapSpec& spec,
     HeatMapPainter map;
     map.xLabels = labelsOf(spec, x);
     map.yLabels = labelsOf(spec, y);
-    map.xTitle = axisTitle(x);
-    map.yTitle = axisTitle(y);
+    map.xTitle = stabilityAxisTitle(x);
+    map.yTitle = stabilityAxisTitle(y);
     const bool limit = value == StabilityValue::Limit;
     map.title = limit ? QObject::tr("Largest stable Δt (smallest over the other axes); below: the "
                                     "engine's estimate and its guard")
@@ -161,8 +158,7 @@ QStringList writeStabilityFigures(const QString& folder, const StabilityMapSpec&
     if (!makeFigureFolder(folder, error)) {
         return written;
     }
-    const StabilityAxis axes[] = {StabilityAxis::AspectRatio, StabilityAxis::StiffnessRatio,
-                                  StabilityAxis::Damping, StabilityAxis::Packing};
+    const auto& axes = kStabilityAxes;
     for (int a = 0; a < 4; ++a) {
         for (int b = a + 1; b < 4; ++b) {
             if (labelsOf(spec, axes[a]).size() < 2 && labelsOf(spec, axes[b]).size() < 2) {

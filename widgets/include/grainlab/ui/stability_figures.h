@@ -17,8 +17,15 @@
 namespace grainlab::ui {
 
 enum class StabilityAxis { AspectRatio, StiffnessRatio, Damping, Packing };
+/// The four axes, in that order.
+inline constexpr StabilityAxis kStabilityAxes[] = {StabilityAxis::AspectRatio,
+                                                   StabilityAxis::StiffnessRatio,
+                                                   StabilityAxis::Damping, StabilityAxis::Packing};
 /// "aspect_ratio", "stiffness_ratio", "damping", "packing".
 QString stabilityAxisName(StabilityAxis axis);
+/// The axis's title in the figures ("aspect ratio η = H/W"), or, `brief`, as the Stability view
+/// names it ("aspect ratio η").
+QString stabilityAxisTitle(StabilityAxis axis, bool brief = false);
 
 enum class StabilityValue {
     Limit,            ///< measured limit [sqrt(m_min / k_n)], the estimate as a note
