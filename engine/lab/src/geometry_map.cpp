@@ -22,7 +22,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 using map_preset::csvNumber;
-using map_preset::presetName;
 using map_preset::requiredNumbers;
 
 /// The overlap of the two supports along world direction `angle` [m].
@@ -41,21 +40,8 @@ struct SupportOverlap {
     }
 };
 
-} // namespace
-
-GeometryMapSpec readGeometryPreset(const std::string& path) {
-    return map_preset::readPresetFile(path, parseGeometryPreset);
-}
-
-GeometryMapSpec parseGeometryPreset(const std::string& text, const std::string& file) {
-    const Json root = parseStrictJson(text, file);
-    GeometryMapSpec spec;
-    spec.sourceText = text;
-    const JsonSection top(file, root, "",
-                          {"kind", "name", "description", "pairs", "smallest_width", "tolerance",
-                           "angle_tolerance", "seed", "axes"});
-    top.choice("kind", {"geometry"}, std::nullopt);
-    spec.name = presetName(top, spec.name);
+/// The geometry preset's own keys.
+void readGeometryKeys(const std::string& /*file*/, const JsonSection& top, GeometryMapSpec& spec) {
     spec.pairs = int(top.integer("pairs", 1, 1000000, spec.pairs));
     spec.smallestWidth = top.number("smallest_width", closed(1e-9, 1e3), spec.smallestWidth);
     spec.tolerance = top.number("tolerance", open(0, 1), spec.tolerance);
@@ -69,7 +55,19 @@ GeometryMapSpec parseGeometryPreset(const std::string& text, const std::string& 
     if (!std::is_sorted(spec.overlaps.begin(), spec.overlaps.end())) {
         axes.refuse("overlap", axes.at("overlap"), "fractions in (0, 2], ascending");
     }
-    return spec;
+}
+
+} // namespace
+
+GeometryMapSpec readGeometryPreset(const std::string& path) {
+    return map_preset::readPresetFile(path, parseGeometryPreset);
+}
+
+GeometryMapSpec parseGeometryPreset(const std::string& text, const std::string& file) {
+    return map_preset::parsePreset<GeometryMapSpec>(
+        text, file, "geometry", std::nullopt,
+        {"pairs", "smallest_width", "tolerance", "angle_tolerance", "seed", "axes"},
+        readGeometryKeys);
 }
 
 double ovalSupport(const OvalShape& s, double ux, double uy) {

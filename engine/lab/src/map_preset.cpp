@@ -33,18 +33,20 @@ std::vector<double> requiredNumbers(const JsonSection& axes, const std::string& 
     return *v;
 }
 
-void writeBracket(Json& j, const StepLimit& limit) {
+void writeLimit(Json& j, const StepLimit& limit) {
     j["bracketed"] = limit.bracketed;
     j["limit"] = limit.limit;
     j["limit_low"] = limit.low;
     j["limit_high"] = limit.high;
+    j["probes"] = limit.probes;
 }
 
-void readBracket(const Json& j, StepLimit& limit) {
+void readLimit(const Json& j, StepLimit& limit) {
     limit.bracketed = j.at("bracketed").get<bool>();
     limit.limit = j.at("limit").get<double>();
     limit.low = j.at("limit_low").get<double>();
     limit.high = j.at("limit_high").get<double>();
+    limit.probes = j.at("probes").get<int>();
 }
 
 } // namespace grainlab::map_preset

@@ -1,13 +1,19 @@
 #pragma once
 // What the stability maps' presets and cell results (stability_map, servo_map, geometry_map)
 // share: the preset's name and description, its required axes, the grains of the sample the
-// time-step and servo maps compact, the bisected limit in a cell result, and how numbers are
-// written in ids and tables. Internal to the lab library.
+// time-step and servo maps compact, what every cell result holds and its timing, and how numbers
+// are written in ids and tables. Internal to the lab library.
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "grainlab/stability_bisection.h"
 #include "grainlab/strict_json.h"
@@ -33,6 +39,24 @@ Spec readPresetFile(const std::string& path,
 /// "description"; returns the name, `fallback` when absent.
 std::string presetName(const JsonSection& top, const std::string& fallback);
 
+/// Parses a preset's text (`file` names it in messages): the top object, whose keys are kind,
+/// name, description and `keys`; its kind, `kind` (when absent `defaultKind`, or refused when
+/// there is none); its name; then the map's own keys (`readOwn(file, top, spec)`).
+template <class Spec>
+Spec parsePreset(const std::string& text, const std::string& file, const std::string& kind,
+                 const std::optional<std::string>& defaultKind, std::vector<std::string> keys,
+                 void (*readOwn)(const std::string& file, const JsonSection& top, Spec& spec)) {
+    const Json root = parseStrictJson(text, file);
+    Spec spec;
+    spec.sourceText = text;
+    keys.insert(keys.begin(), {"kind", "name", "description"});
+    const JsonSection top(file, root, "", std::move(keys));
+    top.choice("kind", {kind}, defaultKind);
+    spec.name = presetName(top, spec.name);
+    readOwn(file, top, spec);
+    return spec;
+}
+
 /// The axis `key` of `axes`: a non-empty array of numbers in `range`, required.
 std::vector<double> requiredNumbers(const JsonSection& axes, const std::string& key, Range range);
 
@@ -49,9 +73,54 @@ void readSampleGrains(const JsonSection& scene, Spec& spec) {
     spec.seed = std::uint64_t(scene.integer("seed", 0, std::int64_t(1) << 53, 1));
 }
 
-/// The bracket of a bisected limit in a cell result's JSON: bracketed, limit, limit_low and
-/// limit_high (the probe count and the detector's fields are written beside it by each map).
-void writeBracket(Json& j, const StepLimit& limit);
-void readBracket(const Json& j, StepLimit& limit);
+/// The bisected limit in a cell result's JSON: bracketed, limit, limit_low, limit_high and
+/// probes (the detector's fields are written beside it by the time-step map).
+void writeLimit(Json& j, const StepLimit& limit);
+void readLimit(const Json& j, StepLimit& limit);
+
+/// A cell result (a StabilityCellResult or a ServoCellResult) as JSON text: the fields every map
+/// writes (cell, the limit, compaction_calm, seconds), then the map's own (`writeOwn(j)`).
+template <class Result, class WriteOwn>
+std::string cellResultText(const Result& r, WriteOwn writeOwn) {
+    Json j;
+    j["cell"] = r.cell.id;
+    writeLimit(j, r.limit);
+    j["compaction_calm"] = r.compactionCalm;
+    j["seconds"] = r.seconds;
+    writeOwn(j);
+    return j.dump(2) + "\n";
+}
+
+/// The cell result in `text`: the fields every map writes, then the map's own
+/// (`readOwn(j, r)`). An `Error` on the way becomes std::runtime_error naming `sourceName` and
+/// the map (`what`).
+template <class Result, class Error, class ReadOwn>
+Result parseCellResultText(const std::string& text, const std::string& sourceName, const char* what,
+                           ReadOwn readOwn) {
+    try {
+        const Json j = Json::parse(text);
+        Result r;
+        r.cell.id = j.at("cell").get<std::string>();
+        readLimit(j, r.limit);
+        r.compactionCalm = j.at("compaction_calm").get<bool>();
+        r.seconds = j.at("seconds").get<double>();
+        readOwn(j, r);
+        return r;
+    } catch (const Error& e) {
+        throw std::runtime_error(
+            fmt::format("{}: not a {} cell result: {}", sourceName, what, e.what()));
+    }
+}
+
+/// A cell measured by `measure(out)`, `out.cell` set before and its wall time in `out.seconds`.
+template <class Result, class Cell, class Measure>
+Result timedCell(const Cell& cell, Measure measure) {
+    const auto start = std::chrono::steady_clock::now();
+    Result out;
+    out.cell = cell;
+    measure(out);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
 
 } // namespace grainlab::map_preset

@@ -1,6 +1,5 @@
 #include "grainlab/servo_cell.h"
 
-#include <chrono>
 #include <filesystem>
 #include <map>
 #include <stdexcept>
@@ -11,6 +10,7 @@
 #include "grainlab/equilibrium.h"
 #include "grainlab/scenes/compacted_scene.h"
 #include "grainlab/simulation.h"
+#include "map_preset.h"
 
 namespace grainlab {
 
@@ -77,53 +77,50 @@ double affineLateralStiffness(const SimulationState& state) {
 }
 
 ServoCellResult measureServoCell(const ServoMapSpec& spec, const ServoCell& cell) {
-    const auto start = std::chrono::steady_clock::now();
-    ServoCellResult out;
-    out.cell = cell;
-    const ServoSample sample = servoSample(spec, cell);
-    out.compactionCalm = sample.calm;
-    out.stiffnessOverPressure = affineLateralStiffness(sample.state) / cell.pressure;
-    const ServoShear shear{cell.pressure, spec.strainPerStep, spec.maxStrainRate,
-                           servoRunSteps(spec, cell.interval)};
-    std::map<double, ServoResponse> seen;
-    const auto run = [&](double gain, bool grid) {
-        const auto known = seen.find(gain);
-        if (known != seen.end()) {
-            return known->second;
+    return map_preset::timedCell<ServoCellResult>(cell, [&](ServoCellResult& out) {
+        const ServoSample sample = servoSample(spec, cell);
+        out.compactionCalm = sample.calm;
+        out.stiffnessOverPressure = affineLateralStiffness(sample.state) / cell.pressure;
+        const ServoShear shear{cell.pressure, spec.strainPerStep, spec.maxStrainRate,
+                               servoRunSteps(spec, cell.interval)};
+        std::map<double, ServoResponse> seen;
+        const auto run = [&](double gain, bool grid) {
+            const auto known = seen.find(gain);
+            if (known != seen.end()) {
+                return known->second;
+            }
+            const ServoProbeResult r = runServoProbe(
+                sample.state, {gain, cell.interval, spec.integralGain}, shear, spec.thresholds);
+            out.runs.push_back({gain, grid, r.response, r.stats});
+            seen[gain] = r.response;
+            return r.response;
+        };
+        std::size_t firstUnstable = spec.gains.size();
+        for (std::size_t i = 0; i < spec.gains.size(); ++i) {
+            if (servoUnstable(run(spec.gains[i], true)) && firstUnstable == spec.gains.size()) {
+                firstUnstable = i;
+            }
         }
-        const ServoProbeResult r = runServoProbe(
-            sample.state, {gain, cell.interval, spec.integralGain}, shear, spec.thresholds);
-        out.runs.push_back({gain, grid, r.response, r.stats});
-        seen[gain] = r.response;
-        return r.response;
-    };
-    std::size_t firstUnstable = spec.gains.size();
-    for (std::size_t i = 0; i < spec.gains.size(); ++i) {
-        if (servoUnstable(run(spec.gains[i], true)) && firstUnstable == spec.gains.size()) {
-            firstUnstable = i;
+        if (firstUnstable == spec.gains.size()) {
+            // Stable over the whole grid: the limit lies above it.
+            out.limit.low = out.limit.high = out.limit.limit = spec.gains.back();
+            out.aboveLimit = seen[spec.gains.back()];
+        } else if (firstUnstable == 0) {
+            out.limit.low = out.limit.high = out.limit.limit = spec.gains.front();
+            out.aboveLimit = seen[spec.gains.front()];
+        } else {
+            // The bisection of the time-step map, on the gain: its bounds are grid runs already
+            // made, so only the gains between them are run.
+            out.limit = bisectStableStep(
+                [&](double gain) {
+                    ProbeResult p;
+                    p.stable = !servoUnstable(run(gain, false));
+                    return p;
+                },
+                spec.gains[firstUnstable - 1], spec.gains[firstUnstable], spec.precision);
+            out.aboveLimit = seen[out.limit.high];
         }
-    }
-    if (firstUnstable == spec.gains.size()) {
-        // Stable over the whole grid: the limit lies above it.
-        out.limit.low = out.limit.high = out.limit.limit = spec.gains.back();
-        out.aboveLimit = seen[spec.gains.back()];
-    } else if (firstUnstable == 0) {
-        out.limit.low = out.limit.high = out.limit.limit = spec.gains.front();
-        out.aboveLimit = seen[spec.gains.front()];
-    } else {
-        // The bisection of the time-step map, on the gain: its bounds are grid runs already
-        // made, so only the gains between them are run.
-        out.limit = bisectStableStep(
-            [&](double gain) {
-                ProbeResult p;
-                p.stable = !servoUnstable(run(gain, false));
-                return p;
-            },
-            spec.gains[firstUnstable - 1], spec.gains[firstUnstable], spec.precision);
-        out.aboveLimit = seen[out.limit.high];
-    }
-    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return out;
+    });
 }
 
 } // namespace grainlab

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -18,8 +19,6 @@ namespace grainlab {
 namespace {
 
 using map_preset::csvNumber;
-using map_preset::presetName;
-using map_preset::readSampleGrains;
 using map_preset::requiredNumbers;
 using map_preset::shortNumber;
 
@@ -33,28 +32,14 @@ std::vector<std::string> cellFields(const ServoCell& c, const ServoMapSpec& spec
                                      SimulationParameters{}.normalStiffness, c.pressure))};
 }
 
-} // namespace
-
-ServoMapSpec readServoPreset(const std::string& path) {
-    return map_preset::readPresetFile(path, parseServoPreset);
-}
-
-ServoMapSpec parseServoPreset(const std::string& text, const std::string& file) {
-    const Json root = parseStrictJson(text, file);
-    ServoMapSpec spec;
-    spec.sourceText = text;
-    const JsonSection top(
-        file, root, "",
-        {"kind", "name", "description", "scene", "shear", "judge", "search", "axes"});
-    top.choice("kind", {"servo"}, std::nullopt);
-    spec.name = presetName(top, spec.name);
-
+/// The servo preset's own keys.
+void readServoKeys(const std::string& /*file*/, const JsonSection& top, ServoMapSpec& spec) {
     const JsonSection scene =
         top.child("scene",
                   {"grains", "smallest_width", "largest_width", "size_classes", "seed", "time_step",
                    "friction", "compaction_rate"},
                   false);
-    readSampleGrains(scene, spec);
+    map_preset::readSampleGrains(scene, spec);
     spec.timeStep = scene.number("time_step", openClosed(0, 1e-3), spec.timeStep);
     spec.friction = scene.number("friction", closed(0, 10), spec.friction);
     spec.compactionRate = scene.number("compaction_rate", openClosed(0, 1e3), spec.compactionRate);
@@ -97,7 +82,25 @@ ServoMapSpec parseServoPreset(const std::string& text, const std::string& file) 
         std::adjacent_find(spec.gains.begin(), spec.gains.end()) != spec.gains.end()) {
         axes.refuse("gain", axes.at("gain"), "gains in (0, 100], strictly ascending");
     }
-    return spec;
+}
+
+/// The real-valued fields of a run's error statistics, by their key in a cell result.
+constexpr std::pair<const char*, double ServoErrorStats::*> kStatsNumbers[] = {
+    {"transient_max", &ServoErrorStats::transientMax}, {"max_error", &ServoErrorStats::maxError},
+    {"mean_error", &ServoErrorStats::meanError},       {"rms_error", &ServoErrorStats::rmsError},
+    {"alternating", &ServoErrorStats::alternating},    {"reversals", &ServoErrorStats::reversals},
+};
+
+} // namespace
+
+ServoMapSpec readServoPreset(const std::string& path) {
+    return map_preset::readPresetFile(path, parseServoPreset);
+}
+
+ServoMapSpec parseServoPreset(const std::string& text, const std::string& file) {
+    return map_preset::parsePreset<ServoMapSpec>(text, file, "servo", std::nullopt,
+                                                 {"scene", "shear", "judge", "search", "axes"},
+                                                 readServoKeys);
 }
 
 std::vector<ServoCell> servoCells(const ServoMapSpec& spec) {
@@ -150,75 +153,55 @@ double ServoCellResult::bestMaxError() const {
 }
 
 std::string servoCellResultJson(const ServoCellResult& r) {
-    Json j;
-    j["kind"] = "servo";
-    j["cell"] = r.cell.id;
-    j["pressure"] = r.cell.pressure;
-    j["aspect_ratio"] = r.cell.aspectRatio;
-    j["interval"] = r.cell.interval;
-    map_preset::writeBracket(j, r.limit);
-    j["probes"] = r.limit.probes;
-    j["above_limit"] = servoResponseName(r.aboveLimit);
-    j["stiffness_over_pressure"] = r.stiffnessOverPressure;
-    j["compaction_calm"] = r.compactionCalm;
-    j["seconds"] = r.seconds;
-    j["runs"] = Json::array();
-    for (const ServoRun& run : r.runs) {
-        const ServoErrorStats& s = run.stats;
-        j["runs"].push_back({{"gain", run.gain},
-                             {"grid", run.grid},
-                             {"response", servoResponseName(run.response)},
-                             {"transient_max", s.transientMax},
-                             {"max_error", s.maxError},
-                             {"mean_error", s.meanError},
-                             {"rms_error", s.rmsError},
-                             {"alternating", s.alternating},
-                             {"reversals", s.reversals},
-                             {"steps", s.steps},
-                             {"updates", s.updates},
-                             {"stopped", s.stopped},
-                             {"stop_cause", s.stopCause}});
-    }
-    return j.dump(2) + "\n";
+    return map_preset::cellResultText(r, [&](Json& j) {
+        j["kind"] = "servo";
+        j["pressure"] = r.cell.pressure;
+        j["aspect_ratio"] = r.cell.aspectRatio;
+        j["interval"] = r.cell.interval;
+        j["above_limit"] = servoResponseName(r.aboveLimit);
+        j["stiffness_over_pressure"] = r.stiffnessOverPressure;
+        j["runs"] = Json::array();
+        for (const ServoRun& run : r.runs) {
+            const ServoErrorStats& s = run.stats;
+            Json out = {{"gain", run.gain},
+                        {"grid", run.grid},
+                        {"response", servoResponseName(run.response)},
+                        {"steps", s.steps},
+                        {"updates", s.updates},
+                        {"stopped", s.stopped},
+                        {"stop_cause", s.stopCause}};
+            for (const auto& [key, field] : kStatsNumbers) {
+                out[key] = s.*field;
+            }
+            j["runs"].push_back(std::move(out));
+        }
+    });
 }
 
 ServoCellResult parseServoCellResult(const std::string& text, const std::string& sourceName) {
-    try {
-        const Json j = Json::parse(text);
-        ServoCellResult r;
-        r.cell.id = j.at("cell").get<std::string>();
-        r.cell.pressure = j.at("pressure").get<double>();
-        r.cell.aspectRatio = j.at("aspect_ratio").get<double>();
-        r.cell.interval = j.at("interval").get<int>();
-        map_preset::readBracket(j, r.limit);
-        r.limit.probes = j.at("probes").get<int>();
-        r.aboveLimit = servoResponseFromName(j.at("above_limit").get<std::string>());
-        r.stiffnessOverPressure = j.at("stiffness_over_pressure").get<double>();
-        r.compactionCalm = j.at("compaction_calm").get<bool>();
-        r.seconds = j.at("seconds").get<double>();
-        for (const Json& run : j.at("runs")) {
-            ServoRun x;
-            x.gain = run.at("gain").get<double>();
-            x.grid = run.at("grid").get<bool>();
-            x.response = servoResponseFromName(run.at("response").get<std::string>());
-            ServoErrorStats& s = x.stats;
-            s.transientMax = run.at("transient_max").get<double>();
-            s.maxError = run.at("max_error").get<double>();
-            s.meanError = run.at("mean_error").get<double>();
-            s.rmsError = run.at("rms_error").get<double>();
-            s.alternating = run.at("alternating").get<double>();
-            s.reversals = run.at("reversals").get<double>();
-            s.steps = run.at("steps").get<std::int64_t>();
-            s.updates = run.at("updates").get<std::int64_t>();
-            s.stopped = run.at("stopped").get<bool>();
-            s.stopCause = run.at("stop_cause").get<std::string>();
-            r.runs.push_back(std::move(x));
-        }
-        return r;
-    } catch (const std::exception& e) {
-        throw std::runtime_error(
-            fmt::format("{}: not a servo map cell result: {}", sourceName, e.what()));
-    }
+    return map_preset::parseCellResultText<ServoCellResult, std::exception>(
+        text, sourceName, "servo map", [](const Json& j, ServoCellResult& r) {
+            r.cell.pressure = j.at("pressure").get<double>();
+            r.cell.aspectRatio = j.at("aspect_ratio").get<double>();
+            r.cell.interval = j.at("interval").get<int>();
+            r.aboveLimit = servoResponseFromName(j.at("above_limit").get<std::string>());
+            r.stiffnessOverPressure = j.at("stiffness_over_pressure").get<double>();
+            for (const Json& run : j.at("runs")) {
+                ServoRun x;
+                x.gain = run.at("gain").get<double>();
+                x.grid = run.at("grid").get<bool>();
+                x.response = servoResponseFromName(run.at("response").get<std::string>());
+                ServoErrorStats& s = x.stats;
+                for (const auto& [key, field] : kStatsNumbers) {
+                    s.*field = run.at(key).get<double>();
+                }
+                s.steps = run.at("steps").get<std::int64_t>();
+                s.updates = run.at("updates").get<std::int64_t>();
+                s.stopped = run.at("stopped").get<bool>();
+                s.stopCause = run.at("stop_cause").get<std::string>();
+                r.runs.push_back(std::move(x));
+            }
+        });
 }
 
 namespace {

@@ -14,7 +14,6 @@ namespace grainlab {
 namespace {
 
 using map_preset::csvNumber;
-using map_preset::presetName;
 using map_preset::readSampleGrains;
 using map_preset::requiredNumbers;
 using map_preset::shortNumber;
@@ -39,15 +38,25 @@ std::size_t arrayLength(const JsonSection& parent, const std::string& key,
     return v.size();
 }
 
+/// The choice `key` of `s`; when it is the first of `allowed` (none, gas), `valueKey` (its
+/// coefficient, its pressure) must be absent.
+std::string kindWithoutValue(const JsonSection& s, const std::string& key,
+                             const std::vector<std::string>& allowed, const std::string& valueKey) {
+    const std::string kind = s.choice(key, allowed, std::nullopt);
+    if (kind == allowed.front() && s.has(valueKey)) {
+        s.refuse(valueKey, s.at(valueKey),
+                 fmt::format("absent ({} {} takes no {})", key, kind, valueKey));
+    }
+    return kind;
+}
+
 DampingParameters readDamping(const JsonSection& s) {
-    DampingParameters d;
-    const std::string kind = s.choice("kind", {"none", "viscous", "local"}, std::nullopt);
+    const std::string kind =
+        kindWithoutValue(s, "kind", {"none", "viscous", "local"}, "coefficient");
     if (kind == "none") {
-        if (s.has("coefficient")) {
-            s.refuse("coefficient", s.at("coefficient"), "absent (kind none takes no coefficient)");
-        }
         return {DampingKind::None, 0.0};
     }
+    DampingParameters d;
     d.kind = kind == "viscous" ? DampingKind::GlobalViscous : DampingKind::CundallLocal;
     // Viscous: a fraction of the critical damping; local: Cundall's alpha, below 1.
     d.coefficient =
@@ -57,11 +66,8 @@ DampingParameters readDamping(const JsonSection& s) {
 
 PackingState readPacking(const JsonSection& s) {
     PackingState p;
-    const std::string state = s.choice("state", {"gas", "dense", "shear"}, std::nullopt);
+    const std::string state = kindWithoutValue(s, "state", {"gas", "dense", "shear"}, "pressure");
     if (state == "gas") {
-        if (s.has("pressure")) {
-            s.refuse("pressure", s.at("pressure"), "absent (state gas takes no pressure)");
-        }
         return p;
     }
     p.kind = state == "dense" ? PackingKind::Dense : PackingKind::Shear;
@@ -101,32 +107,8 @@ std::string axesFields(const StabilityCell& c) {
 const char* kAxesHeader = "cell,aspect_ratio [-],stiffness_ratio [-],damping,"
                           "damping_coefficient [-],packing,pressure [Pa],label";
 
-} // namespace
-
-std::string stabilityPresetKind(const std::string& text, const std::string& file) {
-    const Json root = parseStrictJson(text, file);
-    if (!root.is_object()) {
-        throw JsonFileError(file, "", fmt::format("{}: a stability preset is a JSON object", file));
-    }
-    // Only the kind is read here; each kind's reader checks every other key.
-    const Json kindOnly = root.contains("kind") ? Json{{"kind", root.at("kind")}} : Json::object();
-    const JsonSection top(file, kindOnly, "", {"kind"});
-    return top.choice("kind", {"time_step", "servo", "geometry"}, std::string("time_step"));
-}
-
-StabilityMapSpec readStabilityPreset(const std::string& path) {
-    return map_preset::readPresetFile(path, parseStabilityPreset);
-}
-
-StabilityMapSpec parseStabilityPreset(const std::string& text, const std::string& file) {
-    const Json root = parseStrictJson(text, file);
-    StabilityMapSpec spec;
-    spec.sourceText = text;
-    const JsonSection top(file, root, "",
-                          {"kind", "name", "description", "scene", "probe", "axes"});
-    top.choice("kind", {"time_step"}, std::string("time_step"));
-    spec.name = presetName(top, spec.name);
-
+/// The time-step preset's own keys.
+void readStabilityKeys(const std::string& file, const JsonSection& top, StabilityMapSpec& spec) {
     const JsonSection scene =
         top.child("scene",
                   {"grains", "smallest_width", "largest_width", "size_classes", "seed", "friction",
@@ -174,7 +156,29 @@ StabilityMapSpec parseStabilityPreset(const std::string& text, const std::string
         spec.packings.push_back(
             readPacking(element(file, axes, "packing", i, {"state", "pressure"})));
     }
-    return spec;
+}
+
+} // namespace
+
+std::string stabilityPresetKind(const std::string& text, const std::string& file) {
+    const Json root = parseStrictJson(text, file);
+    if (!root.is_object()) {
+        throw JsonFileError(file, "", fmt::format("{}: a stability preset is a JSON object", file));
+    }
+    // Only the kind is read here; each kind's reader checks every other key.
+    const Json kindOnly = root.contains("kind") ? Json{{"kind", root.at("kind")}} : Json::object();
+    const JsonSection top(file, kindOnly, "", {"kind"});
+    return top.choice("kind", {"time_step", "servo", "geometry"}, std::string("time_step"));
+}
+
+StabilityMapSpec readStabilityPreset(const std::string& path) {
+    return map_preset::readPresetFile(path, parseStabilityPreset);
+}
+
+StabilityMapSpec parseStabilityPreset(const std::string& text, const std::string& file) {
+    return map_preset::parsePreset<StabilityMapSpec>(text, file, "time_step",
+                                                     std::string("time_step"),
+                                                     {"scene", "probe", "axes"}, readStabilityKeys);
 }
 
 std::string dampingLabel(const DampingParameters& d) {
@@ -216,81 +220,67 @@ std::vector<StabilityCell> stabilityCells(const StabilityMapSpec& spec) {
 }
 
 std::string cellResultJson(const StabilityCellResult& r) {
-    Json j;
-    j["cell"] = r.cell.id;
-    j["aspect_ratio"] = r.cell.aspectRatio;
-    j["stiffness_ratio"] = r.cell.stiffnessRatio;
-    j["damping"] = dampingName(r.cell.damping.kind);
-    j["damping_coefficient"] = r.cell.damping.coefficient;
-    j["packing"] = packingName(r.cell.packing.kind);
-    j["pressure"] = r.cell.packing.pressure;
-    j["time_unit"] = r.timeUnit;
-    map_preset::writeBracket(j, r.limit);
-    j["detector"] = blowUpName(r.limit.detector);
-    j["detector_step"] = r.limit.detectorStep;
-    j["detector_detail"] = r.limit.detail;
-    j["probes"] = r.limit.probes;
-    j["estimate"] = r.estimate;
-    j["estimate_translational"] = r.estimateTranslational;
-    j["estimate_rotational"] = r.estimateRotational;
-    j["compaction_calm"] = r.compactionCalm;
-    j["seconds"] = r.seconds;
-    j["accuracy"] = Json::array();
-    for (const AccuracyPoint& a : r.accuracy) {
-        j["accuracy"].push_back({{"fraction", a.fraction},
-                                 {"step", a.step},
-                                 {"stable", a.stable},
-                                 {"max_residual", a.maxResidual},
-                                 {"final_residual", a.finalResidual}});
-    }
-    return j.dump(2) + "\n";
+    return map_preset::cellResultText(r, [&](Json& j) {
+        j["aspect_ratio"] = r.cell.aspectRatio;
+        j["stiffness_ratio"] = r.cell.stiffnessRatio;
+        j["damping"] = dampingName(r.cell.damping.kind);
+        j["damping_coefficient"] = r.cell.damping.coefficient;
+        j["packing"] = packingName(r.cell.packing.kind);
+        j["pressure"] = r.cell.packing.pressure;
+        j["time_unit"] = r.timeUnit;
+        j["detector"] = blowUpName(r.limit.detector);
+        j["detector_step"] = r.limit.detectorStep;
+        j["detector_detail"] = r.limit.detail;
+        j["estimate"] = r.estimate;
+        j["estimate_translational"] = r.estimateTranslational;
+        j["estimate_rotational"] = r.estimateRotational;
+        j["accuracy"] = Json::array();
+        for (const AccuracyPoint& a : r.accuracy) {
+            j["accuracy"].push_back({{"fraction", a.fraction},
+                                     {"step", a.step},
+                                     {"stable", a.stable},
+                                     {"max_residual", a.maxResidual},
+                                     {"final_residual", a.finalResidual}});
+        }
+    });
 }
 
 StabilityCellResult parseCellResult(const std::string& text, const std::string& sourceName) {
-    try {
-        const Json j = Json::parse(text);
-        StabilityCellResult r;
-        r.cell.id = j.at("cell").get<std::string>();
-        r.cell.aspectRatio = j.at("aspect_ratio").get<double>();
-        r.cell.stiffnessRatio = j.at("stiffness_ratio").get<double>();
-        const std::string damping = j.at("damping").get<std::string>();
-        r.cell.damping.kind = damping == "none"      ? DampingKind::None
-                              : damping == "viscous" ? DampingKind::GlobalViscous
-                                                     : DampingKind::CundallLocal;
-        r.cell.damping.coefficient = j.at("damping_coefficient").get<double>();
-        const std::string packing = j.at("packing").get<std::string>();
-        r.cell.packing.kind = packing == "gas"     ? PackingKind::Gas
-                              : packing == "dense" ? PackingKind::Dense
-                                                   : PackingKind::Shear;
-        r.cell.packing.pressure = j.at("pressure").get<double>();
-        r.timeUnit = j.at("time_unit").get<double>();
-        map_preset::readBracket(j, r.limit);
-        const std::string detector = j.at("detector").get<std::string>();
-        for (BlowUp b : {BlowUp::None, BlowUp::NonFinite, BlowUp::Displacement, BlowUp::Overlap,
-                         BlowUp::KineticEnergy, BlowUp::EnergyResidual, BlowUp::UnbalancedFloor,
-                         BlowUp::EngineStop}) {
-            if (blowUpName(b) == detector) {
-                r.limit.detector = b;
+    return map_preset::parseCellResultText<StabilityCellResult, Json::exception>(
+        text, sourceName, "stability", [](const Json& j, StabilityCellResult& r) {
+            r.cell.aspectRatio = j.at("aspect_ratio").get<double>();
+            r.cell.stiffnessRatio = j.at("stiffness_ratio").get<double>();
+            const std::string damping = j.at("damping").get<std::string>();
+            r.cell.damping.kind = damping == "none"      ? DampingKind::None
+                                  : damping == "viscous" ? DampingKind::GlobalViscous
+                                                         : DampingKind::CundallLocal;
+            r.cell.damping.coefficient = j.at("damping_coefficient").get<double>();
+            const std::string packing = j.at("packing").get<std::string>();
+            r.cell.packing.kind = packing == "gas"     ? PackingKind::Gas
+                                  : packing == "dense" ? PackingKind::Dense
+                                                       : PackingKind::Shear;
+            r.cell.packing.pressure = j.at("pressure").get<double>();
+            r.timeUnit = j.at("time_unit").get<double>();
+            const std::string detector = j.at("detector").get<std::string>();
+            for (BlowUp b : {BlowUp::None, BlowUp::NonFinite, BlowUp::Displacement, BlowUp::Overlap,
+                             BlowUp::KineticEnergy, BlowUp::EnergyResidual, BlowUp::UnbalancedFloor,
+                             BlowUp::EngineStop}) {
+                if (blowUpName(b) == detector) {
+                    r.limit.detector = b;
+                }
             }
-        }
-        r.limit.detectorStep = j.at("detector_step").get<std::int64_t>();
-        r.limit.detail = j.at("detector_detail").get<std::string>();
-        r.limit.probes = j.at("probes").get<int>();
-        r.estimate = j.at("estimate").get<double>();
-        r.estimateTranslational = j.at("estimate_translational").get<double>();
-        r.estimateRotational = j.at("estimate_rotational").get<double>();
-        r.compactionCalm = j.at("compaction_calm").get<bool>();
-        r.seconds = j.at("seconds").get<double>();
-        for (const Json& a : j.at("accuracy")) {
-            r.accuracy.push_back({a.at("fraction").get<double>(), a.at("step").get<double>(),
-                                  a.at("stable").get<bool>(), a.at("max_residual").get<double>(),
-                                  a.at("final_residual").get<double>()});
-        }
-        return r;
-    } catch (const Json::exception& e) {
-        throw std::runtime_error(
-            fmt::format("{}: not a stability cell result: {}", sourceName, e.what()));
-    }
+            r.limit.detectorStep = j.at("detector_step").get<std::int64_t>();
+            r.limit.detail = j.at("detector_detail").get<std::string>();
+            r.estimate = j.at("estimate").get<double>();
+            r.estimateTranslational = j.at("estimate_translational").get<double>();
+            r.estimateRotational = j.at("estimate_rotational").get<double>();
+            for (const Json& a : j.at("accuracy")) {
+                r.accuracy.push_back({a.at("fraction").get<double>(), a.at("step").get<double>(),
+                                      a.at("stable").get<bool>(),
+                                      a.at("max_residual").get<double>(),
+                                      a.at("final_residual").get<double>()});
+            }
+        });
 }
 
 std::string limitsCsv(const std::vector<StabilityCellResult>& results) {
