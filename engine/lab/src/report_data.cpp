@@ -704,6 +704,23 @@ Comparison compare(const Scatter& measured, const PublishedValue& published) {
     return c;
 }
 
+namespace {
+
+/// A headline value that is one of the test's shear metrics.
+template <std::optional<double> ShearMetrics::*Field>
+std::optional<double> shearMetric(const SeriesTable& t, double p) {
+    return shearMetrics(t, p).*Field;
+}
+
+/// A headline value that is a coefficient of the test's fit of Z̄ on N_v/N_vi.
+template <double LinearFit::*Field>
+std::optional<double> fitCoefficient(const SeriesTable& t, double) {
+    const auto f = fitOfTest(t);
+    return f ? std::optional<double>((*f).*Field) : std::nullopt;
+}
+
+} // namespace
+
 std::vector<HeadlineRow> headlineTable(const std::vector<ReportRun>& runs) {
     const std::vector<TestKey> keys = testsOf(runs);
     using Extract = std::optional<double> (*)(const SeriesTable&, double);
@@ -715,24 +732,11 @@ std::vector<HeadlineRow> headlineTable(const std::vector<ReportRun>& runs) {
         std::optional<PublishedValue> published;
     };
     const Spec specs[] = {
-        {"e_compacted", "e after compaction", "-",
-         [](const SeriesTable& t, double p) { return shearMetrics(t, p).voidRatioAtStart; },
+        {"e_compacted", "e after compaction", "-", shearMetric<&ShearMetrics::voidRatioAtStart>,
          publishedVoidRatio()},
-        {"peak_q_over_p",
-         "peak q/p",
-         "-",
-         [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakStressRatio; },
-         {}},
-        {"phi_at_peak",
-         "φ at peak",
-         "deg",
-         [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakFrictionAngle; },
-         {}},
-        {"eps1_at_peak",
-         "ε1 at peak",
-         "-",
-         [](const SeriesTable& t, double p) { return shearMetrics(t, p).peakAxialStrain; },
-         {}},
+        {"peak_q_over_p", "peak q/p", "-", shearMetric<&ShearMetrics::peakStressRatio>, {}},
+        {"phi_at_peak", "φ at peak", "deg", shearMetric<&ShearMetrics::peakFrictionAngle>, {}},
+        {"eps1_at_peak", "ε1 at peak", "-", shearMetric<&ShearMetrics::peakAxialStrain>, {}},
         {"epsv_at_10pc",
          "εv at ε1 = 10 %",
          "-",
@@ -746,27 +750,18 @@ std::vector<HeadlineRow> headlineTable(const std::vector<ReportRun>& runs) {
         {"Nv_over_Nvi_at_10pc",
          "N_v/N_vi at ε1 = 10 %",
          "-",
-         [](const SeriesTable& t, double p) { return shearMetrics(t, p).voidCountRatioAt10; },
+         shearMetric<&ShearMetrics::voidCountRatioAt10>,
          {}},
-        {"fit_slope", "slope of Z̄ on N_v/N_vi", "-",
-         [](const SeriesTable& t, double) -> std::optional<double> {
-             const auto f = fitOfTest(t);
-             return f ? std::optional<double>(f->slope) : std::nullopt;
-         },
+        {"fit_slope", "slope of Z̄ on N_v/N_vi", "-", fitCoefficient<&LinearFit::slope>,
          publishedFitSlope()},
-        {"fit_intercept", "intercept of Z̄ on N_v/N_vi", "-",
-         [](const SeriesTable& t, double) -> std::optional<double> {
-             const auto f = fitOfTest(t);
-             return f ? std::optional<double>(f->intercept) : std::nullopt;
-         },
+        {"fit_intercept", "intercept of Z̄ on N_v/N_vi", "-", fitCoefficient<&LinearFit::intercept>,
          publishedFitIntercept()},
         {"I_uf_mean", "mean I_uf during shear", "%",
-         [](const SeriesTable& t, double p) { return shearMetrics(t, p).meanUnbalancedForce; },
-         publishedUnbalancedForce()},
+         shearMetric<&ShearMetrics::meanUnbalancedForce>, publishedUnbalancedForce()},
         {"lateral_stress_error_max",
          "largest lateral-stress error",
          "-",
-         [](const SeriesTable& t, double p) { return shearMetrics(t, p).maxLateralStressError; },
+         shearMetric<&ShearMetrics::maxLateralStressError>,
          {}},
     };
     std::vector<HeadlineRow> rows;
