@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 namespace grainlab::test {
 
@@ -29,6 +30,25 @@ inline std::filesystem::path freshFolder(const std::string& kind, const std::str
                                     fmt::format("grainlab-test-{}-{}-{}", kind, name, getpid());
     std::filesystem::remove_all(p);
     std::filesystem::create_directories(p);
+    return p;
+}
+
+/// The quick experiment (resources/experiments/quick.json) made a run of a few seconds: named
+/// `name`, 120 grains compacted and sheared at 50 kPa to `targetStrain`, a checkpoint every 0.1 %
+/// of strain or 5000 steps. Written to <folder>/experiment.json, whose path it returns.
+inline std::filesystem::path writeTinyExperiment(const std::filesystem::path& folder,
+                                                 const std::string& name, double targetStrain) {
+    nlohmann::json j = nlohmann::json::parse(
+        readText(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json"));
+    j["name"] = name;
+    j["grains"]["count"] = 120;
+    j["compaction"]["pressures"] = {50e3};
+    j["shear"]["pressures"] = {50e3};
+    j["shear"]["target_axial_strain"] = targetStrain;
+    j["record"]["snapshot_strain_interval"] = 1e-3;
+    j["record"]["snapshot_step_interval"] = 5000;
+    const std::filesystem::path p = folder / "experiment.json";
+    std::ofstream(p) << j.dump(2);
     return p;
 }
 
@@ -55,6 +75,18 @@ inline CommandOutput grainlabOutput(const std::string& arguments,
     const int status = pclose(pipe);
     out.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return out;
+}
+
+/// `grainlab run experiment --out out --quiet`: how it ended and what it said.
+inline CommandOutput runOutput(const std::filesystem::path& experiment,
+                               const std::filesystem::path& out) {
+    return grainlabOutput(
+        fmt::format("run {} --out {} --quiet", experiment.string(), out.string()));
+}
+
+/// `grainlab run --resume folder --quiet`: how it ended and what it said.
+inline CommandOutput resumeOutput(const std::filesystem::path& folder) {
+    return grainlabOutput(fmt::format("run --resume {} --quiet", folder.string()));
 }
 
 /// In a forked child: replaces it by grainlab with `arguments` (exit status 127 if that fails).

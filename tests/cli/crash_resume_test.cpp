@@ -119,28 +119,37 @@ RunRecord readRun(const fs::path& folder) {
     return r;
 }
 
+/// What differs between the maps by test `a` and `b`: their sizes (of `what`), each test of `a`
+/// that `b` lacks ("no <thing> <test>"), and for a test in both, what `differ(test, x, y)` says.
+template <class Map, class Differ>
+std::string differencesByTest(const Map& a, const Map& b, const std::string& what,
+                              const std::string& thing, Differ differ) {
+    std::string out;
+    if (a.size() != b.size()) {
+        out += fmt::format(" {} {} against {};", b.size(), what, a.size());
+    }
+    for (const auto& [test, value] : a) {
+        const auto it = b.find(test);
+        out +=
+            it == b.end() ? fmt::format(" no {}{};", thing, test) : differ(test, value, it->second);
+    }
+    return out;
+}
+
 /// What differs between two runs ("" if nothing).
 std::string differences(const RunRecord& a, const RunRecord& b) {
-    std::string out;
-    if (a.csv.size() != b.csv.size()) {
-        out += fmt::format(" {} tests against {};", a.csv.size(), b.csv.size());
-    }
-    for (const auto& [test, text] : a.csv) {
-        const auto it = b.csv.find(test);
-        if (it == b.csv.end()) {
-            out += " no " + test + ";";
-            continue;
-        }
-        if (it->second != text) {
-            out += " " + test + "/series.csv;";
-        }
-        const SeriesTable& sa = a.series.at(test);
-        const SeriesTable& sb = b.series.at(test);
-        if (!sameBits(sa.rows, sb.rows) || sa.stages != sb.stages) {
-            out += fmt::format(" run.h5 series {} ({} rows against {});", test, sb.rows.size(),
-                               sa.rows.size());
-        }
-    }
+    std::string out = differencesByTest(
+        a.csv, b.csv, "tests", "",
+        [&](const std::string& test, const std::string& text, const std::string& other) {
+            std::string d = other != text ? " " + test + "/series.csv;" : "";
+            const SeriesTable& sa = a.series.at(test);
+            const SeriesTable& sb = b.series.at(test);
+            if (!sameBits(sa.rows, sb.rows) || sa.stages != sb.stages) {
+                d += fmt::format(" run.h5 series {} ({} rows against {});", test, sb.rows.size(),
+                                 sa.rows.size());
+            }
+            return d;
+        });
     if (a.samplePressures != b.samplePressures) {
         out += " sample list;";
     } else {
@@ -150,20 +159,17 @@ std::string differences(const RunRecord& a, const RunRecord& b) {
             }
         }
     }
-    if (a.peaks.size() != b.peaks.size()) {
-        out += fmt::format(" {} peak checkpoints against {};", b.peaks.size(), a.peaks.size());
-    }
-    for (const auto& [test, state] : a.peaks) {
-        const auto it = b.peaks.find(test);
-        if (it == b.peaks.end()) {
-            out += " no peak checkpoint of " + test + ";";
-        } else if (!identicalDynamics(state, it->second) ||
-                   a.peakInfo.at(test).peakStressRatio != b.peakInfo.at(test).peakStressRatio ||
-                   a.peakInfo.at(test).axialStrain != b.peakInfo.at(test).axialStrain) {
-            out += fmt::format(" peak checkpoint of {} (step {} against {});", test,
-                               it->second.step, state.step);
-        }
-    }
+    out += differencesByTest(
+        a.peaks, b.peaks, "peak checkpoints", "peak checkpoint of ",
+        [&](const std::string& test, const SimulationState& state, const SimulationState& other) {
+            const bool same =
+                identicalDynamics(state, other) &&
+                a.peakInfo.at(test).peakStressRatio == b.peakInfo.at(test).peakStressRatio &&
+                a.peakInfo.at(test).axialStrain == b.peakInfo.at(test).axialStrain;
+            return same ? std::string()
+                        : fmt::format(" peak checkpoint of {} (step {} against {});", test,
+                                      other.step, state.step);
+        });
     if (!identicalDynamics(a.last, b.last)) {
         out += fmt::format(" final state (step {} against {});", b.last.step, a.last.step);
     }

@@ -22,6 +22,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "../engine/child_output.h"
 #include "cli_test_files.h"
 #include "grainlab/run_file.h"
 
@@ -33,25 +34,26 @@ namespace fs = std::filesystem;
 using test::CommandOutput;
 using test::grainlabOutput;
 using test::readText;
+using test::resumeOutput;
+using test::runOutput;
 
-fs::path freshFolder(const std::string& name) {
-    return test::freshFolder("folder", name);
-}
+/// Each test's own empty folder (named after the test), removed at its end unless the test
+/// failed (then kept, to be looked at).
+class RunFolder : public ::testing::Test {
+protected:
+    void TearDown() override {
+        if (!HasFailure()) {
+            fs::remove_all(base);
+        }
+    }
+
+    const fs::path base = test::freshFolder(
+        "folder", ::testing::UnitTest::GetInstance()->current_test_info()->name());
+};
 
 /// 120 grains, one pressure, a short shear: a couple of seconds.
 fs::path writeTinyExperiment(const fs::path& folder, double targetStrain = 0.002) {
-    nlohmann::json j = nlohmann::json::parse(
-        readText(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json"));
-    j["name"] = "tiny";
-    j["grains"]["count"] = 120;
-    j["compaction"]["pressures"] = {50e3};
-    j["shear"]["pressures"] = {50e3};
-    j["shear"]["target_axial_strain"] = targetStrain;
-    j["record"]["snapshot_strain_interval"] = 1e-3;
-    j["record"]["snapshot_step_interval"] = 5000;
-    const fs::path p = folder / "experiment.json";
-    std::ofstream(p) << j.dump(2);
-    return p;
+    return test::writeTinyExperiment(folder, "tiny", targetStrain);
 }
 
 /// `grainlab run experiment --out out --quiet` started as a child process (its output
@@ -80,6 +82,12 @@ bool interruptedRun(const fs::path& experiment, const fs::path& out, int steps) 
     return WIFEXITED(status) && WEXITSTATUS(status) == 130;
 }
 
+/// `grainlab run --resume out` ends with exit status 0.
+void expectResumes(const fs::path& out) {
+    const CommandOutput again = resumeOutput(out);
+    EXPECT_EQ(again.status, 0) << again.output;
+}
+
 std::map<std::string, std::string> folderBytes(const fs::path& folder) {
     std::map<std::string, std::string> out;
     for (const auto& e : fs::recursive_directory_iterator(folder)) {
@@ -90,8 +98,7 @@ std::map<std::string, std::string> folderBytes(const fs::path& folder) {
     return out;
 }
 
-TEST(RunFolder, ARefusedExperimentCreatesNoFolder) {
-    const fs::path base = freshFolder("refused");
+TEST_F(RunFolder, ARefusedExperimentCreatesNoFolder) {
     const fs::path bad = base / "bad.json";
     std::ofstream(bad) << R"({"name": 3})";
     const fs::path out = base / "new";
@@ -101,41 +108,31 @@ TEST(RunFolder, ARefusedExperimentCreatesNoFolder) {
     EXPECT_NE(r.output.find(bad.string()), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("name"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(out)) << "a refused experiment left " << out << " behind";
-    fs::remove_all(base);
 }
 
-TEST(RunFolder, QuietPrintsOnlyTheLastLine) {
-    const fs::path base = freshFolder("quiet");
+TEST_F(RunFolder, QuietPrintsOnlyTheLastLine) {
     const fs::path experiment = writeTinyExperiment(base);
     const fs::path out = base / "out";
-    const CommandOutput r =
-        grainlabOutput(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()));
+    const CommandOutput r = runOutput(experiment, out);
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_EQ(r.output, fmt::format("grainlab run: finished; outputs in {}\n", out.string()));
-    fs::remove_all(base);
 }
 
-TEST(RunFolder, ResumeOfAFinishedRunChangesNothing) {
-    const fs::path base = freshFolder("finished");
+TEST_F(RunFolder, ResumeOfAFinishedRunChangesNothing) {
     const fs::path experiment = writeTinyExperiment(base);
     const fs::path out = base / "out";
-    ASSERT_EQ(
-        grainlabOutput(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()))
-            .status,
-        0);
+    ASSERT_EQ(runOutput(experiment, out).status, 0);
     const auto before = folderBytes(out);
     const auto checkpoints = listCheckpoints((out / "run.h5").string());
-    const CommandOutput r = grainlabOutput(fmt::format("run --resume {} --quiet", out.string()));
+    const CommandOutput r = resumeOutput(out);
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("is finished"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(out.string()), std::string::npos) << r.output;
     EXPECT_EQ(folderBytes(out), before) << "a resume of a finished run changed its files";
     EXPECT_EQ(listCheckpoints((out / "run.h5").string()), checkpoints);
-    fs::remove_all(base);
 }
 
-TEST(RunFolder, ASecondRunIntoALiveFolderIsRefusedAndTouchesNothing) {
-    const fs::path base = freshFolder("live");
+TEST_F(RunFolder, ASecondRunIntoALiveFolderIsRefusedAndTouchesNothing) {
     const fs::path experiment = writeTinyExperiment(base, 0.1); // long enough to stay alive
     const fs::path out = base / "out";
     const pid_t child = startRun(experiment, out);
@@ -167,17 +164,13 @@ TEST(RunFolder, ASecondRunIntoALiveFolderIsRefusedAndTouchesNothing) {
     const auto checkpoints = listCheckpoints((out / "run.h5").string());
     ASSERT_FALSE(checkpoints.empty());
     EXPECT_NE(checkpoints.back().find("interrupted"), std::string::npos);
-    const CommandOutput again =
-        grainlabOutput(fmt::format("run --resume {} --quiet", out.string()));
-    EXPECT_EQ(again.status, 0) << again.output;
-    fs::remove_all(base);
+    expectResumes(out);
 }
 
 // A stop that comes while a new run makes its files (a study stopped just as its pool starts a
 // run): at every moment the run is either killed before it made any file, or it ends as an
 // interrupted run (130) whose folder resumes to the end; never a run file without a checkpoint.
-TEST(RunFolder, AStopAsANewRunStartsLeavesNoFolderOrOneThatResumes) {
-    const fs::path base = freshFolder("early-stop");
+TEST_F(RunFolder, AStopAsANewRunStartsLeavesNoFolderOrOneThatResumes) {
     const fs::path experiment = writeTinyExperiment(base);
     for (const int delayMs : {0, 2, 5, 10, 20, 40, 80, 160}) {
         SCOPED_TRACE(fmt::format("SIGINT {} ms after the start", delayMs));
@@ -196,42 +189,33 @@ TEST(RunFolder, AStopAsANewRunStartsLeavesNoFolderOrOneThatResumes) {
         ASSERT_TRUE(WIFEXITED(status));
         EXPECT_TRUE(WEXITSTATUS(status) == 130 || WEXITSTATUS(status) == 0)
             << "exit " << WEXITSTATUS(status);
-        const CommandOutput again =
-            grainlabOutput(fmt::format("run --resume {} --quiet", out.string()));
-        EXPECT_EQ(again.status, 0) << again.output;
+        expectResumes(out);
     }
-    fs::remove_all(base);
 }
 
-TEST(RunFolder, OutOfAnExistingRunIsRefusedWithoutForce) {
-    const fs::path base = freshFolder("exists");
+TEST_F(RunFolder, OutOfAnExistingRunIsRefusedWithoutForce) {
     const fs::path experiment = writeTinyExperiment(base);
     const fs::path out = base / "out";
     // An interrupted, resumable run.
     ASSERT_TRUE(interruptedRun(experiment, out, 3000));
     const auto before = folderBytes(out);
-    const CommandOutput r =
-        grainlabOutput(fmt::format("run {} --out {} --quiet", experiment.string(), out.string()));
+    const CommandOutput r = runOutput(experiment, out);
     EXPECT_EQ(r.status, 2) << r.output;
     EXPECT_NE(r.output.find(out.string()), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("grainlab run --resume " + out.string()), std::string::npos)
         << r.output;
     EXPECT_NE(r.output.find("--force"), std::string::npos) << r.output;
     EXPECT_EQ(folderBytes(out), before) << "a refused run changed the folder";
-    fs::remove_all(base);
 }
 
-TEST(RunFolder, ForceLeavesNoFileOfTheOldRun) {
-    const fs::path base = freshFolder("force");
+TEST_F(RunFolder, ForceLeavesNoFileOfTheOldRun) {
     const fs::path out = base / "out";
     nlohmann::json j = nlohmann::json::parse(readText(writeTinyExperiment(base)));
     j["compaction"]["pressures"] = {25e3, 50e3};
     j["shear"]["pressures"] = {25e3, 50e3};
     const fs::path two = base / "two.json";
     std::ofstream(two) << j.dump(2);
-    ASSERT_EQ(
-        grainlabOutput(fmt::format("run {} --out {} --quiet", two.string(), out.string())).status,
-        0);
+    ASSERT_EQ(runOutput(two, out).status, 0);
     ASSERT_TRUE(fs::exists(out / "p025kPa" / "series.csv"));
     std::ofstream(out / "notes.txt") << "the user's own file";
     const fs::path one = base / "experiment.json"; // 50 kPa only
@@ -245,11 +229,9 @@ TEST(RunFolder, ForceLeavesNoFileOfTheOldRun) {
     EXPECT_EQ(listTests(file), (std::vector<std::string>{"compaction", "p050kPa"}));
     EXPECT_EQ(listSamples(file), std::vector<double>{50e3});
     EXPECT_EQ(readExperimentText(file), readText(one));
-    fs::remove_all(base);
 }
 
-TEST(RunFolder, ThreadsOutsideTheirRangeAreRefused) {
-    const fs::path base = freshFolder("threads");
+TEST_F(RunFolder, ThreadsOutsideTheirRangeAreRefused) {
     const fs::path experiment = writeTinyExperiment(base);
     for (const char* threads : {"-1", "0", "2147483647", "1.5"}) {
         const CommandOutput r =
@@ -260,17 +242,12 @@ TEST(RunFolder, ThreadsOutsideTheirRangeAreRefused) {
         EXPECT_NE(r.output.find("1 to 1024"), std::string::npos) << r.output;
         EXPECT_FALSE(fs::exists(base / "out")) << threads;
     }
-    fs::remove_all(base);
 }
 
-TEST(RunFolder, ADamagedRunFileIsRefusedByNameOrResumesToTheSameResult) {
-    const fs::path base = freshFolder("damaged");
+TEST_F(RunFolder, ADamagedRunFileIsRefusedByNameOrResumesToTheSameResult) {
     const fs::path experiment = writeTinyExperiment(base);
     const fs::path whole = base / "whole";
-    ASSERT_EQ(
-        grainlabOutput(fmt::format("run {} --out {} --quiet", experiment.string(), whole.string()))
-            .status,
-        0);
+    ASSERT_EQ(runOutput(experiment, whole).status, 0);
     const fs::path stopped = base / "stopped";
     ASSERT_TRUE(interruptedRun(experiment, stopped, 9000));
     const std::string bytes = readText(stopped / "run.h5");
@@ -283,8 +260,7 @@ TEST(RunFolder, ADamagedRunFileIsRefusedByNameOrResumesToTheSameResult) {
         std::string damaged = bytes;
         damaged[offset] = static_cast<char>(damaged[offset] ^ 0x5a);
         std::ofstream(copy / "run.h5", std::ios::binary | std::ios::trunc) << damaged;
-        const CommandOutput r =
-            grainlabOutput(fmt::format("run --resume {} --quiet", copy.string()));
+        const CommandOutput r = resumeOutput(copy);
         ASSERT_GE(r.status, 0) << "byte " << offset << ": crashed\n" << r.output;
         if (r.status == 0) {
             // Resumed: every series as in the uninterrupted run.
@@ -304,7 +280,6 @@ TEST(RunFolder, ADamagedRunFileIsRefusedByNameOrResumesToTheSameResult) {
     EXPECT_GT(refused, 0);
     std::printf("24 damaged run files: %d refused, %d resumed to the same series\n", refused,
                 resumed);
-    fs::remove_all(base);
 }
 
 /// Exit status of a shell command (its output discarded).
@@ -345,12 +320,11 @@ std::string otherReadersRefuse(const fs::path& file, const std::string& python) 
     return out;
 }
 
-TEST(RunFolder, AResumedRunEndsWithAFileOtherReadersOpenOrIsRefusedNamingTheDamage) {
+TEST_F(RunFolder, AResumedRunEndsWithAFileOtherReadersOpenOrIsRefusedNamingTheDamage) {
     const std::string python = pythonWithH5py();
     if (shell("h5dump --version") != 0 || python.empty()) {
         GTEST_SKIP() << "needs h5dump and Python with h5py";
     }
-    const fs::path base = freshFolder("damaged-whole");
     const fs::path experiment = writeTinyExperiment(base);
     const fs::path stopped = base / "stopped";
     ASSERT_TRUE(interruptedRun(experiment, stopped, 9000));
@@ -380,8 +354,7 @@ TEST(RunFolder, AResumedRunEndsWithAFileOtherReadersOpenOrIsRefusedNamingTheDama
         const fs::path copy = base / d.name;
         fs::copy(stopped, copy, fs::copy_options::recursive);
         std::ofstream(copy / "run.h5", std::ios::binary | std::ios::trunc) << d.bytes;
-        const CommandOutput r =
-            grainlabOutput(fmt::format("run --resume {} --quiet", copy.string()));
+        const CommandOutput r = resumeOutput(copy);
         ASSERT_GE(r.status, 0) << d.name << ": crashed\n" << r.output;
         // Only grainlab's own message: no trace of the HDF5 library's error stack.
         EXPECT_EQ(r.output.find("HDF5-DIAG"), std::string::npos) << d.name << "\n" << r.output;
@@ -407,45 +380,25 @@ TEST(RunFolder, AResumedRunEndsWithAFileOtherReadersOpenOrIsRefusedNamingTheDama
         }
         std::printf("%s: %s\n", d.name.c_str(), r.status == 0 ? "resumed" : "refused");
     }
-    fs::remove_all(base);
 }
 
-TEST(RunFolder, AFullDiskStopsTheRunCleanlyAndItResumesExactly) {
-    const fs::path base = freshFolder("full");
+TEST_F(RunFolder, AFullDiskStopsTheRunCleanlyAndItResumesExactly) {
     const fs::path experiment = writeTinyExperiment(base, 0.004);
     const fs::path whole = base / "whole";
-    ASSERT_EQ(
-        grainlabOutput(fmt::format("run {} --out {} --quiet", experiment.string(), whole.string()))
-            .status,
-        0);
+    ASSERT_EQ(runOutput(experiment, whole).status, 0);
     const auto size = fs::file_size(whole / "run.h5");
     // The disk fills at 60 % of the run file: with RLIMIT_FSIZE and SIGXFSZ ignored, a write past
     // the limit fails with EFBIG, as on a full file system.
     const fs::path out = base / "out";
-    int pipeFds[2];
-    ASSERT_EQ(::pipe(pipeFds), 0);
-    const pid_t child = fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
-        ::dup2(pipeFds[1], 1);
-        ::dup2(pipeFds[1], 2);
+    const auto [status, output] = test::childOutput([&](int fd) {
+        ::dup2(fd, 1);
+        ::dup2(fd, 2);
         std::signal(SIGXFSZ, SIG_IGN);
         struct rlimit limit {};
         limit.rlim_cur = limit.rlim_max = size * 6 / 10;
         ::setrlimit(RLIMIT_FSIZE, &limit);
-        execl(GRAINLAB_EXE, GRAINLAB_EXE, "run", experiment.c_str(), "--out", out.c_str(),
-              "--quiet", static_cast<char*>(nullptr));
-        _exit(127);
-    }
-    ::close(pipeFds[1]);
-    std::string output;
-    char buffer[512];
-    for (ssize_t n; (n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0;) {
-        output.append(buffer, std::size_t(n));
-    }
-    ::close(pipeFds[0]);
-    int status = 0;
-    waitpid(child, &status, 0);
+        test::execGrainlab({"run", experiment.string(), "--out", out.string(), "--quiet"});
+    });
     ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status) << "\n" << output;
     EXPECT_EQ(WEXITSTATUS(status), 1) << output;
     EXPECT_NE(output.find((out / "run.h5").string()), std::string::npos) << output;
@@ -453,7 +406,7 @@ TEST(RunFolder, AFullDiskStopsTheRunCleanlyAndItResumesExactly) {
     EXPECT_NE(output.find("grainlab run --resume " + out.string()), std::string::npos) << output;
     // Space freed: the run resumes from its last complete checkpoint to the same bits.
     ASSERT_FALSE(listCheckpoints((out / "run.h5").string()).empty());
-    const CommandOutput r = grainlabOutput(fmt::format("run --resume {} --quiet", out.string()));
+    const CommandOutput r = resumeOutput(out);
     ASSERT_EQ(r.status, 0) << r.output;
     for (const auto& [name, text] : folderBytes(whole)) {
         if (name.ends_with("series.csv")) {
@@ -465,7 +418,6 @@ TEST(RunFolder, AFullDiskStopsTheRunCleanlyAndItResumesExactly) {
                   readSeries((out / "run.h5").string(), test).rows)
             << test;
     }
-    fs::remove_all(base);
 }
 
 } // namespace

@@ -72,8 +72,7 @@ TEST(RunWarningsCommand, PrintedOnceAndKeptThroughAKillAndResume) {
                        "GRAINLAB_TEST_STOP_AFTER_STEPS=" + std::to_string(expected[0].step + 700));
     EXPECT_NE(killed.status, 0);
     EXPECT_EQ(count(killed.output, said), 1u) << killed.output;
-    const CommandOutput resumed =
-        grainlabOutput(fmt::format("run --resume {} --quiet", parts.string()));
+    const CommandOutput resumed = test::resumeOutput(parts);
     ASSERT_EQ(resumed.status, 0) << resumed.output;
     // A resumed run repeats its earlier warnings on the terminal, and the file holds each once.
     EXPECT_EQ(count(resumed.output, said), 1u) << resumed.output;

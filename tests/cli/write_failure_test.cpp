@@ -16,8 +16,8 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
+#include "../engine/child_output.h"
 #include "cli_test_files.h"
 #include "grainlab/run_file.h"
 
@@ -28,25 +28,15 @@ namespace fs = std::filesystem;
 
 using test::execGrainlab;
 using test::readText;
-
-struct Result {
-    int status = -1; ///< wait status
-    std::string output;
-};
+using Result = test::ChildOutput; ///< the wait status and the output
 
 /// Runs grainlab with `arguments`, its file size limited to `limit` bytes (0: no limit) and
 /// the room check bypassed, so that a write fails inside HDF5. SIGXFSZ keeps its default
 /// action: grainlab itself must turn the limit into a failed write.
 Result runLimited(const std::vector<std::string>& arguments, rlim_t limit) {
-    int pipeFds[2];
-    if (::pipe(pipeFds) != 0) {
-        return {};
-    }
-    const pid_t child = fork();
-    if (child == 0) {
-        ::dup2(pipeFds[1], 1);
-        ::dup2(pipeFds[1], 2);
-        ::close(pipeFds[0]);
+    return test::childOutput([&](int out) {
+        ::dup2(out, 1);
+        ::dup2(out, 2);
         ::setenv("GRAINLAB_TEST_NO_ROOM_CHECK", "1", 1);
         if (limit > 0) {
             struct rlimit l {};
@@ -54,16 +44,7 @@ Result runLimited(const std::vector<std::string>& arguments, rlim_t limit) {
             ::setrlimit(RLIMIT_FSIZE, &l);
         }
         execGrainlab(arguments);
-    }
-    ::close(pipeFds[1]);
-    Result r;
-    char buffer[512];
-    for (ssize_t n; (n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0;) {
-        r.output.append(buffer, std::size_t(n));
-    }
-    ::close(pipeFds[0]);
-    waitpid(child, &r.status, 0);
-    return r;
+    });
 }
 
 bool sameBits(const SeriesTable& a, const SeriesTable& b) {
@@ -81,17 +62,7 @@ bool sameBits(const SeriesTable& a, const SeriesTable& b) {
 
 TEST(WriteFailure, AFailedWriteInsideHdf5KeepsTheLastCheckpointAndResumesExactly) {
     const fs::path base = test::freshFolder("write-failure", "limits");
-    nlohmann::json j = nlohmann::json::parse(
-        readText(std::string(GRAINLAB_SOURCE_DIR) + "/resources/experiments/quick.json"));
-    j["name"] = "write-failure";
-    j["grains"]["count"] = 120;
-    j["compaction"]["pressures"] = {50e3};
-    j["shear"]["pressures"] = {50e3};
-    j["shear"]["target_axial_strain"] = 0.004;
-    j["record"]["snapshot_strain_interval"] = 1e-3;
-    j["record"]["snapshot_step_interval"] = 5000;
-    const fs::path experiment = base / "experiment.json";
-    std::ofstream(experiment) << j.dump(2);
+    const fs::path experiment = test::writeTinyExperiment(base, "write-failure", 0.004);
 
     const fs::path whole = base / "whole";
     const Result w =

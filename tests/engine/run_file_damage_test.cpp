@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include "child_output.h"
 #include "grainlab/assembly.h"
 #include "grainlab/run_file.h"
 #include "grainlab/simulation.h"
@@ -182,11 +183,7 @@ TEST(RunFileDamage, ReadOnlyFileNamesTheCause) {
     fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                              fs::perms::others_read | fs::perms::others_exec);
     // Root may write any file: the attempt runs in a child that gives up root (if it has it).
-    int pipeFds[2];
-    ASSERT_EQ(::pipe(pipeFds), 0);
-    const pid_t child = fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
+    const test::ChildOutput r = test::childOutput([&](int out) {
         if (::geteuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0)) {
             _exit(3);
         }
@@ -196,19 +193,11 @@ TEST(RunFileDamage, ReadOnlyFileNamesTheCause) {
         } catch (const std::runtime_error& e) {
             message = e.what();
         }
-        (void)!::write(pipeFds[1], message.data(), message.size());
+        (void)!::write(out, message.data(), message.size());
         _exit(0);
-    }
-    ::close(pipeFds[1]);
-    std::string what;
-    char buffer[512];
-    for (ssize_t n; (n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0;) {
-        what.append(buffer, std::size_t(n));
-    }
-    ::close(pipeFds[0]);
-    int status = 0;
-    waitpid(child, &status, 0);
-    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "could not give up root";
+    });
+    ASSERT_TRUE(WIFEXITED(r.status) && WEXITSTATUS(r.status) == 0) << "could not give up root";
+    const std::string& what = r.output;
     EXPECT_NE(what, "opened") << "a read-only file was opened for writing";
     EXPECT_NE(what.find(path), std::string::npos) << what;
     EXPECT_NE(what.find("Permission denied"), std::string::npos) << what;
