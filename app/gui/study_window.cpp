@@ -30,16 +30,6 @@
 namespace grainlab::ui {
 namespace {
 
-const MetricSummary* findMetric(const SettingSummary& s, const std::string& test,
-                                const std::string& metric) {
-    for (const MetricSummary& m : s.metrics) {
-        if (m.test == test && m.metric == metric) {
-            return &m;
-        }
-    }
-    return nullptr;
-}
-
 /// Sets the items of `box` to `items`, keeping the current choice when it is still there.
 void setItems(QComboBox* box, const QStringList& items) {
     QStringList now;
@@ -361,7 +351,7 @@ void StudyWindow::showPoint(int point) {
         lines << QStringLiteral("%1 = %2").arg(q(knobName(kind)), q(level.label()).toHtmlEscaped());
     }
     lines << tr("runs finished: %1 of %2").arg(s.runsDone).arg(spec_.seeds.size());
-    if (const MetricSummary* m = findMetric(s, test, metric)) {
+    if (const MetricSummary* m = findMetricSummary(s, test, metric)) {
         lines << tr("%1 at %2: %3 ± %4 %5")
                      .arg(q(metric), q(test), number(m->scatter.mean), number(m->scatter.sd),
                           m->unit == "-" ? QString() : q(m->unit));

@@ -16,16 +16,6 @@
 namespace grainlab::ui {
 namespace {
 
-const MetricSummary* find(const SettingSummary& s, const std::string& test,
-                          const std::string& metric) {
-    for (const MetricSummary& m : s.metrics) {
-        if (m.test == test && m.metric == metric) {
-            return &m;
-        }
-    }
-    return nullptr;
-}
-
 QString q(const std::string& s) {
     return QString::fromStdString(s);
 }
@@ -42,6 +32,16 @@ QString costTitle(const std::string& measure) {
 
 } // namespace
 
+const MetricSummary* findMetricSummary(const SettingSummary& setting, const std::string& test,
+                                       const std::string& metric) {
+    for (const MetricSummary& m : setting.metrics) {
+        if (m.test == test && m.metric == metric) {
+            return &m;
+        }
+    }
+    return nullptr;
+}
+
 PlotPainter errorCostPlot(const StudySpec& spec, const StudyPlan& plan, const StudySummary& summary,
                           const std::string& test, const std::string& metric) {
     PlotPainter plot;
@@ -52,7 +52,7 @@ PlotPainter errorCostPlot(const StudySpec& spec, const StudyPlan& plan, const St
     double smallest = std::numeric_limits<double>::infinity();
     std::optional<double> noise;
     for (const SettingSummary& s : summary.settings) {
-        if (const MetricSummary* m = find(s, test, metric)) {
+        if (const MetricSummary* m = findMetricSummary(s, test, metric)) {
             if (m->error && std::abs(*m->error) > 0) {
                 smallest = std::min(smallest, std::abs(*m->error));
             }
@@ -70,7 +70,7 @@ PlotPainter errorCostPlot(const StudySpec& spec, const StudyPlan& plan, const St
     }
     const auto tol = spec.tolerances.find(metric);
     for (const SettingSummary& s : summary.settings) {
-        const MetricSummary* m = find(s, test, metric);
+        const MetricSummary* m = findMetricSummary(s, test, metric);
         if (!m || !m->error || s.cost.count == 0) {
             continue;
         }
@@ -133,7 +133,7 @@ PlotPainter metricKnobPlot(const StudySpec& spec, const StudyPlan& plan,
                 onlyThisKnob = false;
             }
         }
-        const MetricSummary* m = find(s, test, metric);
+        const MetricSummary* m = findMetricSummary(s, test, metric);
         if (!onlyThisKnob || !m || m->scatter.count == 0) {
             continue;
         }

@@ -17,6 +17,10 @@
 
 namespace grainlab::ui {
 
+/// The summary of `metric` at `test` among `setting`'s, or null when it has none.
+const MetricSummary* findMetricSummary(const SettingSummary& setting, const std::string& test,
+                                       const std::string& metric);
+
 /// |error| of `metric` at `test` against cost, one point per setting with results.
 PlotPainter errorCostPlot(const StudySpec& spec, const StudyPlan& plan, const StudySummary& summary,
                           const std::string& test, const std::string& metric);
