@@ -455,6 +455,31 @@ void MainWindow::showError(const QString& message) {
     statusBar()->showMessage(message, 10000);
 }
 
+void MainWindow::sayEnded(const QString& error, const QString& done) {
+    if (error.isEmpty()) {
+        statusBar()->showMessage(done, 10000);
+    } else {
+        showError(error);
+    }
+}
+
+bool MainWindow::showingError(bool (MainWindow::*action)(const QString&, QString*),
+                              const QString& path) {
+    QString error;
+    if ((this->*action)(path, &error)) {
+        return true;
+    }
+    showError(error);
+    return false;
+}
+
+void MainWindow::openFromStudy(bool (MainWindow::*open)(const QString&, QString*),
+                               const QString& path) {
+    showingError(open, path);
+    raise();
+    activateWindow();
+}
+
 void MainWindow::updateControls(RunState state) {
     const bool valid = parameters_->valid();
     const bool hasRun = state == RunState::Running || state == RunState::Paused;
@@ -649,21 +674,10 @@ StudyWindow* MainWindow::studyWindow() {
     if (!study_) {
         study_ = new StudyWindow(this);
         connect(study_, &StudyWindow::openRunFolderRequested, this, [this](const QString& folder) {
-            QString error;
-            if (!openRunFolder(folder, &error)) {
-                showError(error);
-            }
-            raise();
-            activateWindow();
+            openFromStudy(&MainWindow::openRunFolder, folder);
         });
-        connect(study_, &StudyWindow::openExperimentRequested, this, [this](const QString& path) {
-            QString error;
-            if (!openExperiment(path, &error)) {
-                showError(error);
-            }
-            raise();
-            activateWindow();
-        });
+        connect(study_, &StudyWindow::openExperimentRequested, this,
+                [this](const QString& path) { openFromStudy(&MainWindow::openExperiment, path); });
     }
     return study_;
 }
@@ -699,9 +713,8 @@ void MainWindow::showRunFileCheckpoint(int index) {
 void MainWindow::openRunFileDialog() {
     const QString path = QFileDialog::getOpenFileName(this, tr("Open run file"), runsFolder_,
                                                       tr("Run files (*.h5)"));
-    QString error;
-    if (!path.isEmpty() && !openRunFile(path, &error)) {
-        showError(error);
+    if (!path.isEmpty()) {
+        showingError(&MainWindow::openRunFile, path);
     }
 }
 
@@ -709,12 +722,8 @@ void MainWindow::openExperimentDialog() {
     const QString path = QFileDialog::getOpenFileName(
         this, tr("Open experiment"), QString::fromStdString(resourcePath("experiments")),
         tr("Experiment files (*.json)"));
-    if (path.isEmpty()) {
-        return;
-    }
-    QString error;
-    if (!openExperiment(path, &error)) {
-        showError(error);
+    if (!path.isEmpty()) {
+        showingError(&MainWindow::openExperiment, path);
     }
 }
 

@@ -200,6 +200,13 @@ private:
     /// The `grainlab export vtk` process has ended (CommandProcess::ended).
     void paraviewEnded(int exitStatus, const QString& output, const QString& startError);
     void showError(const QString& message);
+    /// Shows `error` (showError), or, when there is none, `done` in the status bar for 10 s.
+    void sayEnded(const QString& error, const QString& done);
+    /// `action(path, &error)` (openExperiment(), saveExperimentAs(), …), its error shown when it
+    /// fails; whether it succeeded.
+    bool showingError(bool (MainWindow::*action)(const QString&, QString*), const QString& path);
+    /// Opens `path` with `open` for the Study window, then brings this window to the front.
+    void openFromStudy(bool (MainWindow::*open)(const QString&, QString*), const QString& path);
     /// Why no report can be written of reportSource() now ("" when one can): there is none, or
     /// it is the live run, still running or paused.
     QString reportRefusal() const;

@@ -117,13 +117,7 @@ void MainWindow::saveExperimentDialog() {
             .filePath(QString::fromStdString(experiment_.name) + QStringLiteral("-edited.json"));
     const QString path = QFileDialog::getSaveFileName(this, tr("Save experiment as"), suggested,
                                                       tr("Experiment files (*.json)"));
-    if (path.isEmpty()) {
-        return;
-    }
-    QString error;
-    if (!saveExperimentAs(path, &error)) {
-        showError(error);
-    } else {
+    if (!path.isEmpty() && showingError(&MainWindow::saveExperimentAs, path)) {
         statusBar()->showMessage(tr("Experiment saved to %1").arg(path), 8000);
     }
 }
@@ -158,13 +152,8 @@ QStringList MainWindow::exportFigureSet(const QString& folder, QString* error) {
 }
 
 void MainWindow::figureSetEnded(const QString& folder, const QString& note) {
-    if (note.isEmpty()) {
-        statusBar()->showMessage(
-            tr("Figure set written to %1 (the report's figures in report/figures/)").arg(folder),
-            10000);
-    } else {
-        showError(note);
-    }
+    sayEnded(note,
+             tr("Figure set written to %1 (the report's figures in report/figures/)").arg(folder));
     emit figureSetWritten(folder, note);
 }
 
@@ -253,13 +242,8 @@ void MainWindow::paraviewEnded(int exitStatus, const QString& output, const QStr
     } else if (exitStatus != 0) {
         error = tr("No ParaView files written: %1").arg(output.trimmed());
     }
-    if (error.isEmpty()) {
-        statusBar()->showMessage(
-            tr("ParaView files written: open the .pvd files of %1 in ParaView").arg(paraviewOut_),
-            10000);
-    } else {
-        showError(error);
-    }
+    sayEnded(error,
+             tr("ParaView files written: open the .pvd files of %1 in ParaView").arg(paraviewOut_));
     emit paraviewFilesWritten(paraviewOut_, error);
 }
 
