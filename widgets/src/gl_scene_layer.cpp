@@ -217,6 +217,19 @@ void GlSceneLayer::setView(QOpenGLShaderProgram& program) {
     program.setUniformValue("viewport", QVector2D(float(width()), float(height())));
 }
 
+template <class T>
+void GlSceneLayer::drawInstances(QOpenGLShaderProgram& program, QOpenGLVertexArrayObject& vao,
+                                 QOpenGLBuffer& buffer, const std::vector<T>& instances) {
+    program.bind();
+    setView(program);
+    vao.bind();
+    buffer.bind();
+    buffer.allocate(instances.data(), int(instances.size() * sizeof(T)));
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(instances.size()));
+    vao.release();
+    program.release();
+}
+
 void GlSceneLayer::updateVoidCellMesh() {
     const SnapshotPtr& snapshot = renderer_.snapshot();
     if (snapshot == meshSnapshot_) {
@@ -313,15 +326,8 @@ void GlSceneLayer::drawForceChains() {
         data[k] = {float(c.a1), float(c.a2), float(c.b1), float(c.b2), float(c.width), {}};
         toBytes(c.colour, data[k].rgba);
     }
-    chainProgram_.bind();
-    setView(chainProgram_);
-    chainVao_.bind();
-    chains_.bind();
-    chains_.allocate(data.data(), int(data.size() * sizeof(ChainInstance)));
     // Instances are drawn in order: the strongest chains end up on top, as in the QPainter view.
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(data.size()));
-    chainVao_.release();
-    chainProgram_.release();
+    drawInstances(chainProgram_, chainVao_, chains_, data);
 }
 
 void GlSceneLayer::drawGrains() {
@@ -352,14 +358,7 @@ void GlSceneLayer::drawGrains() {
         }
         toBytes(g.colour, d.rgba);
     }
-    program_.bind();
-    setView(program_);
-    vao_.bind();
-    instances_.bind();
-    instances_.allocate(data.data(), int(data.size() * sizeof(Instance)));
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(data.size()));
-    vao_.release();
-    program_.release();
+    drawInstances(program_, vao_, instances_, data);
 }
 
 } // namespace grainlab::ui

@@ -53,6 +53,11 @@ private:
     bool buildProgram(QOpenGLShaderProgram& program, const char* vertex, const char* fragment);
     /// Sets the world-to-screen uniforms of `program`.
     void setView(QOpenGLShaderProgram& program);
+    /// Uploads `instances` into `buffer` and draws them, a four-vertex strip each, in order, with
+    /// `program` (its view set) and `vao`.
+    template <class T>
+    void drawInstances(QOpenGLShaderProgram& program, QOpenGLVertexArrayObject& vao,
+                       QOpenGLBuffer& buffer, const std::vector<T>& instances);
     void drawGrains();
     void drawVoidCells();
     void drawForceChains();
