@@ -48,18 +48,13 @@ PlotPainter geometryDeparturePlot(const GeometryMapSpec& spec,
         }
     }
     const double left = spec.overlaps.front(), right = spec.overlaps.back();
-    plot.curves.push_back({.x = {left, right},
-                           .y = {spec.tolerance, spec.tolerance},
-                           .band = {},
-                           .label = QObject::tr("departure tolerance %1 W").arg(spec.tolerance),
-                           .colour = QColor(90, 90, 90)});
+    plot.curves.push_back(plotLine({left, spec.tolerance}, {right, spec.tolerance},
+                                   QObject::tr("departure tolerance %1 W").arg(spec.tolerance),
+                                   QColor(90, 90, 90)));
     plot.curves.push_back(
-        {.x = {guard, guard},
-         .y = {kGeometryDepartureFloor, top},
-         .band = {},
-         .label = QObject::tr("overlap guard, stability.max_overlap_fraction = %1").arg(guard),
-         .colour = QColor(0, 0, 0),
-         .width = 2.5});
+        plotLine({guard, kGeometryDepartureFloor}, {guard, top},
+                 QObject::tr("overlap guard, stability.max_overlap_fraction = %1").arg(guard),
+                 QColor(0, 0, 0), 2.5));
     return plot;
 }
 

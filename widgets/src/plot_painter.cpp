@@ -46,6 +46,15 @@ QString tickLabel(double v) {
 
 } // namespace
 
+PlotCurve plotLine(QPointF from, QPointF to, const QString& label, QColor colour, double width) {
+    return {.x = {from.x(), to.x()},
+            .y = {from.y(), to.y()},
+            .band = {},
+            .label = label,
+            .colour = colour,
+            .width = width};
+}
+
 PlotPainter::Range PlotPainter::range(bool x) const {
     const PlotAxis& axis = x ? xAxis : yAxis;
     double lo = kInf, hi = -kInf;

@@ -99,13 +99,10 @@ PlotPainter servoStableGainPlot(const std::vector<ServoCellResult>& results, dou
         }
         plot.curves.push_back(std::move(curve));
     }
-    plot.curves.push_back({.x = {1, largestInterval},
-                           .y = {gainBound, gainBound},
-                           .band = {},
-                           .label = QObject::tr("the experiment file's bound, servo.gain ≤ %1")
-                                        .arg(QString::number(gainBound, 'g', 3)),
-                           .colour = QColor(0, 0, 0),
-                           .width = 2.5});
+    plot.curves.push_back(plotLine({1, gainBound}, {largestInterval, gainBound},
+                                   QObject::tr("the experiment file's bound, servo.gain ≤ %1")
+                                       .arg(QString::number(gainBound, 'g', 3)),
+                                   QColor(0, 0, 0), 2.5));
     return plot;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <QColor>
+#include <QPointF>
 #include <QRectF>
 #include <QString>
 
@@ -33,6 +34,10 @@ struct PlotCurve {
     QColor colour{31, 119, 180};
     double width = 1.5;
 };
+
+/// A straight line from `from` to `to` in the plot's units (a tolerance, a guard, a bound).
+PlotCurve plotLine(QPointF from, QPointF to, const QString& label, QColor colour,
+                   double width = 1.5);
 
 /// A horizontal band y in [low, high] across the whole plot.
 struct PlotBand {
