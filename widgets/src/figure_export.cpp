@@ -36,6 +36,19 @@ bool fail(QString* error, const QString& message) {
     return false;
 }
 
+/// Paints the figure on `device` (an SVG or PDF file): false, with `cannotWrite` in `error`,
+/// when the painter cannot begin on it.
+bool paintOnto(QPaintDevice& device, QSize size, const std::function<void(QPainter&, QSize)>& paint,
+               const QString& cannotWrite, QString* error) {
+    QPainter painter;
+    if (!painter.begin(&device)) {
+        return fail(error, cannotWrite);
+    }
+    paint(painter, size);
+    painter.end();
+    return true;
+}
+
 } // namespace
 
 bool exportFigure(const QString& path, QSize size,
@@ -63,12 +76,10 @@ bool exportFigure(const QString& path, QSize size,
         svg.setViewBox(QRect(QPoint(0, 0), size));
         svg.setTitle(QFileInfo(path).baseName());
         svg.setDescription(QStringLiteral("GrainLab figure"));
-        QPainter painter;
-        if (!painter.begin(&svg)) {
-            return fail(error, QObject::tr("%1: cannot write the SVG file").arg(path));
+        if (!paintOnto(svg, size, paint, QObject::tr("%1: cannot write the SVG file").arg(path),
+                       error)) {
+            return false;
         }
-        paint(painter, size);
-        painter.end();
         return QFileInfo(path).size() > 0 ||
                fail(error, QObject::tr("%1: the SVG file is empty").arg(path));
     }
@@ -81,13 +92,8 @@ bool exportFigure(const QString& path, QSize size,
         pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
         pdf.setTitle(QFileInfo(path).baseName());
         pdf.setCreator(QStringLiteral("GrainLab"));
-        QPainter painter;
-        if (!painter.begin(&pdf)) {
-            return fail(error, QObject::tr("%1: cannot write the PDF file").arg(path));
-        }
-        paint(painter, size);
-        painter.end();
-        return true;
+        return paintOnto(pdf, size, paint, QObject::tr("%1: cannot write the PDF file").arg(path),
+                         error);
     }
     return fail(
         error,
