@@ -731,6 +731,19 @@ auto withFile(const std::string& path, const std::string& what, F&& f) {
     });
 }
 
+/// One value per child of the group `group` of the file, in write order: read(child).
+template <class Read>
+auto readChildren(const std::string& path, const std::string& what, const char* group, Read read) {
+    return withFile(path, what, [&](H5::H5File& file) {
+        const H5::Group parent = file.openGroup(group);
+        std::vector<std::invoke_result_t<Read&, const H5::Group&>> out;
+        for (const auto& link : childrenInWriteOrder(parent)) {
+            out.push_back(read(parent.openGroup(link)));
+        }
+        return out;
+    });
+}
+
 } // namespace
 
 H5::H5File hdf5io::openRunFileToRead(const std::string& path) {
@@ -774,38 +787,26 @@ std::vector<RunWarning> readWarnings(const std::string& path) {
 }
 
 std::vector<std::string> listCheckpoints(const std::string& path) {
-    return withFile(path, "listing checkpoints", [&](H5::H5File& file) {
-        const H5::Group parent = file.openGroup("checkpoints");
-        std::vector<std::string> names;
-        for (const auto& link : childrenInWriteOrder(parent)) {
-            names.push_back(readStringAttribute(parent.openGroup(link), "name"));
-        }
-        return names;
-    });
+    return readChildren(path, "listing checkpoints", "checkpoints",
+                        [](const H5::Group& g) { return readStringAttribute(g, "name"); });
 }
 
 std::vector<CheckpointInfo> listCheckpointInfo(const std::string& path) {
-    return withFile(path, "listing checkpoints", [&](H5::H5File& file) {
-        const H5::Group parent = file.openGroup("checkpoints");
-        std::vector<CheckpointInfo> out;
-        for (const auto& link : childrenInWriteOrder(parent)) {
-            const H5::Group g = parent.openGroup(link);
-            CheckpointInfo info;
-            info.name = readStringAttribute(g, "name");
-            info.step = readAttribute<std::int64_t>(g, "step");
-            if (g.attrExists("stage_kind")) {
-                info.stageKind = readStringAttribute(g, "stage_kind");
-                info.test = readStringAttribute(g, "test");
-                info.pressure = readAttribute<double>(g, "pressure");
-                info.axialStrain = readAttribute<double>(g, "axial_strain");
-            }
-            if (g.attrExists("peak") && readAttribute<std::int32_t>(g, "peak") != 0) {
-                info.peak = true;
-                info.peakStressRatio = readAttribute<double>(g, "q_over_p");
-            }
-            out.push_back(std::move(info));
+    return readChildren(path, "listing checkpoints", "checkpoints", [](const H5::Group& g) {
+        CheckpointInfo info;
+        info.name = readStringAttribute(g, "name");
+        info.step = readAttribute<std::int64_t>(g, "step");
+        if (g.attrExists("stage_kind")) {
+            info.stageKind = readStringAttribute(g, "stage_kind");
+            info.test = readStringAttribute(g, "test");
+            info.pressure = readAttribute<double>(g, "pressure");
+            info.axialStrain = readAttribute<double>(g, "axial_strain");
         }
-        return out;
+        if (g.attrExists("peak") && readAttribute<std::int32_t>(g, "peak") != 0) {
+            info.peak = true;
+            info.peakStressRatio = readAttribute<double>(g, "q_over_p");
+        }
+        return info;
     });
 }
 
@@ -819,25 +820,13 @@ std::vector<double> readThetaAtTestStart(const std::string& path, const std::str
 }
 
 std::vector<double> listSamples(const std::string& path) {
-    return withFile(path, "listing samples", [&](H5::H5File& file) {
-        const H5::Group parent = file.openGroup("samples");
-        std::vector<double> pressures;
-        for (const auto& link : childrenInWriteOrder(parent)) {
-            pressures.push_back(readAttribute<double>(parent.openGroup(link), "pressure"));
-        }
-        return pressures;
-    });
+    return readChildren(path, "listing samples", "samples",
+                        [](const H5::Group& g) { return readAttribute<double>(g, "pressure"); });
 }
 
 std::vector<std::string> listTests(const std::string& path) {
-    return withFile(path, "listing tests", [&](H5::H5File& file) {
-        const H5::Group parent = file.openGroup("tests");
-        std::vector<std::string> names;
-        for (const auto& link : childrenInWriteOrder(parent)) {
-            names.push_back(readStringAttribute(parent.openGroup(link), "name"));
-        }
-        return names;
-    });
+    return readChildren(path, "listing tests", "tests",
+                        [](const H5::Group& g) { return readStringAttribute(g, "name"); });
 }
 
 SeriesTable readSeries(const std::string& path, const std::string& test) {

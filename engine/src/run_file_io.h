@@ -27,27 +27,27 @@ namespace grainlab::hdf5io {
 
 // ---- types ---------------------------------------------------------------------------------
 
+/// The HDF5 types of the values the run file stores: in memory (native) and in the file
+/// (little-endian).
 template <class T>
-struct H5Types;
-template <>
-struct H5Types<double> {
-    static const H5::PredType& memory() { return H5::PredType::NATIVE_DOUBLE; }
-    static const H5::PredType& file() { return H5::PredType::IEEE_F64LE; }
-};
-template <>
-struct H5Types<std::int32_t> {
-    static const H5::PredType& memory() { return H5::PredType::NATIVE_INT32; }
-    static const H5::PredType& file() { return H5::PredType::STD_I32LE; }
-};
-template <>
-struct H5Types<std::int64_t> {
-    static const H5::PredType& memory() { return H5::PredType::NATIVE_INT64; }
-    static const H5::PredType& file() { return H5::PredType::STD_I64LE; }
-};
-template <>
-struct H5Types<std::uint8_t> {
-    static const H5::PredType& memory() { return H5::PredType::NATIVE_UINT8; }
-    static const H5::PredType& file() { return H5::PredType::STD_U8LE; }
+struct H5Types {
+    static const H5::PredType& memory() { return pick(false); }
+    static const H5::PredType& file() { return pick(true); }
+
+private:
+    static const H5::PredType& pick(bool inFile) {
+        using P = H5::PredType;
+        if constexpr (std::is_same_v<T, double>) {
+            return inFile ? P::IEEE_F64LE : P::NATIVE_DOUBLE;
+        } else if constexpr (std::is_same_v<T, std::int32_t>) {
+            return inFile ? P::STD_I32LE : P::NATIVE_INT32;
+        } else if constexpr (std::is_same_v<T, std::int64_t>) {
+            return inFile ? P::STD_I64LE : P::NATIVE_INT64;
+        } else {
+            static_assert(std::is_same_v<T, std::uint8_t>, "a type the run file does not store");
+            return inFile ? P::STD_U8LE : P::NATIVE_UINT8;
+        }
+    }
 };
 
 /// Text is stored as fixed-length UTF-8 strings (NUL-padded): in the checksummed object

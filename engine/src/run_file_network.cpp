@@ -140,6 +140,35 @@ std::vector<T> column(const H5::Group& g, const std::string& name, std::size_t n
     return v;
 }
 
+/// A column of a group and the values it is read into.
+template <class T>
+struct Column {
+    const char* name;
+    std::vector<T>& values;
+};
+template <class T>
+Column(const char*, std::vector<T>&) -> Column<T>;
+
+/// Reads the column `first` and then each of `rest`, which must have as many values; returns
+/// that count.
+template <class T, class... U>
+std::size_t readColumns(const H5::Group& g, Column<T> first, Column<U>... rest) {
+    first.values = readArray<T>(g, first.name);
+    const std::size_t n = first.values.size();
+    ((rest.values = column<U>(g, rest.name, n)), ...);
+    return n;
+}
+
+/// Reads the group `group` of checkpoint `name` with `read`; a T of its own when the checkpoint
+/// has none (a file written before the group was).
+template <class T, class Read>
+T readCheckpointGroup(const std::string& path, const std::string& name, const char* group,
+                      const std::string& what, Read read) {
+    return withCheckpoint(path, name, what, [&](const H5::Group& cp) {
+        return cp.nameExists(group) ? read(cp.openGroup(group)) : T{};
+    });
+}
+
 /// Refuses CSR offsets that do not run from 0 to `size` without decreasing.
 void checkOffsets(const std::vector<std::int64_t>& offsets, std::size_t size,
                   const std::string& what) {
@@ -157,65 +186,46 @@ void checkOffsets(const std::vector<std::int64_t>& offsets, std::size_t size,
 } // namespace
 
 StoredContacts readContacts(const std::string& path, const std::string& name) {
-    return withCheckpoint(path, name, "reading the contacts", [&](const H5::Group& cp) {
-        StoredContacts c;
-        if (!cp.nameExists("contacts")) {
+    return readCheckpointGroup<StoredContacts>(
+        path, name, "contacts", "reading the contacts", [](const H5::Group& g) {
+            StoredContacts c;
+            readColumns(g, Column{"first", c.first}, Column{"second", c.second},
+                        Column{"shift1", c.shift1}, Column{"shift2", c.shift2},
+                        Column{"normal1", c.normal1}, Column{"normal2", c.normal2},
+                        Column{"point1", c.point1}, Column{"point2", c.point2},
+                        Column{"branch1", c.branch1}, Column{"branch2", c.branch2},
+                        Column{"overlap", c.overlap}, Column{"normal_force", c.normalForce},
+                        Column{"tangential_force", c.tangentialForce}, Column{"sliding", c.sliding},
+                        Column{"strong", c.strong}, Column{"load_bearing", c.loadBearing});
+            readColumns(g, Column{"centre1", c.centre1}, Column{"centre2", c.centre2});
+            c.strongThreshold = readAttribute<double>(g, "strong_threshold");
             return c;
-        }
-        const H5::Group g = cp.openGroup("contacts");
-        c.first = readArray<std::int32_t>(g, "first");
-        const std::size_t n = c.first.size();
-        c.second = column<std::int32_t>(g, "second", n);
-        c.shift1 = column<std::int32_t>(g, "shift1", n);
-        c.shift2 = column<std::int32_t>(g, "shift2", n);
-        c.normal1 = column<double>(g, "normal1", n);
-        c.normal2 = column<double>(g, "normal2", n);
-        c.point1 = column<double>(g, "point1", n);
-        c.point2 = column<double>(g, "point2", n);
-        c.branch1 = column<double>(g, "branch1", n);
-        c.branch2 = column<double>(g, "branch2", n);
-        c.overlap = column<double>(g, "overlap", n);
-        c.normalForce = column<double>(g, "normal_force", n);
-        c.tangentialForce = column<double>(g, "tangential_force", n);
-        c.sliding = column<std::uint8_t>(g, "sliding", n);
-        c.strong = column<std::uint8_t>(g, "strong", n);
-        c.loadBearing = column<std::uint8_t>(g, "load_bearing", n);
-        c.centre1 = readArray<double>(g, "centre1");
-        c.centre2 = column<double>(g, "centre2", c.centre1.size());
-        c.strongThreshold = readAttribute<double>(g, "strong_threshold");
-        return c;
-    });
+        });
 }
 
 StoredVoidCells readVoidCells(const std::string& path, const std::string& name) {
-    return withCheckpoint(path, name, "reading the void cells", [&](const H5::Group& cp) {
-        StoredVoidCells v;
-        if (!cp.nameExists("void_cells")) {
+    return readCheckpointGroup<StoredVoidCells>(
+        path, name, "void_cells", "reading the void cells", [](const H5::Group& g) {
+            StoredVoidCells v;
+            const std::size_t n =
+                readColumns(g, Column{"valence", v.valence}, Column{"area", v.area},
+                            Column{"centroid1", v.centroid1}, Column{"centroid2", v.centroid2},
+                            Column{"elongation", v.elongation}, Column{"direction", v.direction});
+            v.grains = readArray<std::int32_t>(g, "grains");
+            v.grainOffsets = column<std::int64_t>(g, "grain_offsets", n + 1);
+            checkOffsets(v.grainOffsets, v.grains.size(), objectName(g) + "/grain_offsets");
+            v.valenceHistogram = readArray<std::int32_t>(g, "valence_histogram");
+            if (g.nameExists("vertices1")) { // format 3 on
+                v.secondMoment11 = column<double>(g, "second_moment11", n);
+                v.secondMoment22 = column<double>(g, "second_moment22", n);
+                v.secondMoment12 = column<double>(g, "second_moment12", n);
+                readColumns(g, Column{"vertices1", v.vertices1}, Column{"vertices2", v.vertices2});
+                v.vertexOffsets = column<std::int64_t>(g, "vertex_offsets", n + 1);
+                checkOffsets(v.vertexOffsets, v.vertices1.size(),
+                             objectName(g) + "/vertex_offsets");
+            }
             return v;
-        }
-        const H5::Group g = cp.openGroup("void_cells");
-        v.valence = readArray<std::int32_t>(g, "valence");
-        const std::size_t n = v.valence.size();
-        v.area = column<double>(g, "area", n);
-        v.centroid1 = column<double>(g, "centroid1", n);
-        v.centroid2 = column<double>(g, "centroid2", n);
-        v.elongation = column<double>(g, "elongation", n);
-        v.direction = column<double>(g, "direction", n);
-        v.grains = readArray<std::int32_t>(g, "grains");
-        v.grainOffsets = column<std::int64_t>(g, "grain_offsets", n + 1);
-        checkOffsets(v.grainOffsets, v.grains.size(), objectName(g) + "/grain_offsets");
-        v.valenceHistogram = readArray<std::int32_t>(g, "valence_histogram");
-        if (g.nameExists("vertices1")) { // format 3 on
-            v.secondMoment11 = column<double>(g, "second_moment11", n);
-            v.secondMoment22 = column<double>(g, "second_moment22", n);
-            v.secondMoment12 = column<double>(g, "second_moment12", n);
-            v.vertices1 = readArray<double>(g, "vertices1");
-            v.vertices2 = column<double>(g, "vertices2", v.vertices1.size());
-            v.vertexOffsets = column<std::int64_t>(g, "vertex_offsets", n + 1);
-            checkOffsets(v.vertexOffsets, v.vertices1.size(), objectName(g) + "/vertex_offsets");
-        }
-        return v;
-    });
+        });
 }
 
 } // namespace grainlab
