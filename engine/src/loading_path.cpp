@@ -6,6 +6,8 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -19,22 +21,25 @@ const std::vector<std::string> kKindNames = {"drained",     "constant_volume", "
 
 // The keys each kind may hold besides "kind"; any other known key is refused for that kind.
 const std::map<std::string, std::vector<Kind>>& keyKinds() {
-    static const std::map<std::string, std::vector<Kind>> keys = {
-        {"slope", {Kind::StressPath}},
-        {"direction", {Kind::Drained, Kind::ConstantVolume, Kind::ConstantP, Kind::StressPath}},
-        {"control", {Kind::Cyclic}},
-        {"drainage", {Kind::Cyclic}},
-        {"amplitude", {Kind::Cyclic}},
-        {"mean", {Kind::Cyclic}},
-        {"cycles", {Kind::Cyclic}},
-        {"stop_strain_amplitude", {Kind::Cyclic}},
-        {"stop_pressure_fraction", {Kind::Cyclic}},
-        {"count", {Kind::Probes}},
-        {"increment", {Kind::Probes}},
-        {"plane", {Kind::Probes}},
-        {"start", {Kind::Probes}},
-        {"start_strain", {Kind::Probes}},
-    };
+    static const std::map<std::string, std::vector<Kind>> keys = [] {
+        // The kinds that take each group of keys.
+        const std::pair<std::vector<Kind>, std::vector<const char*>> groups[] = {
+            {{Kind::StressPath}, {"slope"}},
+            {{Kind::Drained, Kind::ConstantVolume, Kind::ConstantP, Kind::StressPath},
+             {"direction"}},
+            {{Kind::Cyclic},
+             {"control", "drainage", "amplitude", "mean", "cycles", "stop_strain_amplitude",
+              "stop_pressure_fraction"}},
+            {{Kind::Probes}, {"count", "increment", "plane", "start", "start_strain"}},
+        };
+        std::map<std::string, std::vector<Kind>> out;
+        for (const auto& [kinds, names] : groups) {
+            for (const char* name : names) {
+                out[name] = kinds;
+            }
+        }
+        return out;
+    }();
     return keys;
 }
 

@@ -130,22 +130,40 @@ void JsonSection::missing(const std::string& key, const std::string& allowed) co
     fail(key, fmt::format("missing required key {} ({})", path(key), allowed));
 }
 
+namespace {
+
+/// The value of `key` in `s` when it is there and of the JSON type `typed` accepts; nullptr when
+/// absent, for `fallback` to answer (a required key is refused as missing). `allowed` says what
+/// may stand there.
+template <class T>
+const Json* givenValue(const JsonSection& s, const std::string& key,
+                       const std::optional<T>& fallback, const std::string& allowed,
+                       bool (Json::*typed)() const noexcept) {
+    if (!s.has(key)) {
+        if (!fallback) {
+            s.missing(key, allowed);
+        }
+        return nullptr;
+    }
+    const Json& v = s.at(key);
+    if (!(v.*typed)()) {
+        s.refuse(key, v, fmt::format("{} (got {})", allowed, jsonTypeName(v)));
+    }
+    return &v;
+}
+
+} // namespace
+
 double JsonSection::number(const std::string& key, Range range,
                            std::optional<double> fallback) const {
     const std::string allowed = "a number " + range.text();
-    if (!has(key)) {
-        if (!fallback) {
-            missing(key, allowed);
-        }
+    const Json* v = givenValue(*this, key, fallback, allowed, &Json::is_number);
+    if (!v) {
         return *fallback;
     }
-    const Json& v = at(key);
-    if (!v.is_number()) {
-        refuse(key, v, fmt::format("{} (got {})", allowed, jsonTypeName(v)));
-    }
-    const double x = v.get<double>();
+    const double x = v->get<double>();
     if (!std::isfinite(x) || !range.contains(x)) {
-        refuse(key, v, allowed);
+        refuse(key, *v, allowed);
     }
     return x;
 }
@@ -158,13 +176,11 @@ std::int64_t JsonSection::integer(const std::string& key, std::int64_t lo, std::
                                 : hi >= std::numeric_limits<std::int32_t>::max()
                                     ? fmt::format("an integer >= {} (at most {})", lo, hi)
                                     : fmt::format("an integer in [{}, {}]", lo, hi);
-    if (!has(key)) {
-        if (!fallback) {
-            missing(key, allowed);
-        }
+    const Json* given = givenValue(*this, key, fallback, allowed, &Json::is_number);
+    if (!given) {
         return *fallback;
     }
-    const Json& v = at(key);
+    const Json& v = *given;
     std::int64_t n = 0;
     if (v.is_number_unsigned()) {
         const auto u = v.get<std::uint64_t>();
@@ -174,15 +190,13 @@ std::int64_t JsonSection::integer(const std::string& key, std::int64_t lo, std::
         n = static_cast<std::int64_t>(u);
     } else if (v.is_number_integer()) {
         n = v.get<std::int64_t>();
-    } else if (v.is_number_float()) {
+    } else {
         const double x = v.get<double>();
         // Exact integers only; the bound keeps the conversion defined.
         if (!(std::fabs(x) < 9.0e18) || std::floor(x) != x) {
             refuse(key, v, allowed);
         }
         n = static_cast<std::int64_t>(x);
-    } else {
-        refuse(key, v, fmt::format("{} (got {})", allowed, jsonTypeName(v)));
     }
     if (n < lo || n > hi) {
         refuse(key, v, allowed);
@@ -197,19 +211,13 @@ std::string JsonSection::choice(const std::string& key, const std::vector<std::s
         list += (list.empty() ? "" : ", ") + ("\"" + a + "\"");
     }
     const std::string text = "one of " + list;
-    if (!has(key)) {
-        if (!fallback) {
-            missing(key, text);
-        }
+    const Json* v = givenValue(*this, key, fallback, text, &Json::is_string);
+    if (!v) {
         return *fallback;
     }
-    const Json& v = at(key);
-    if (!v.is_string()) {
-        refuse(key, v, fmt::format("{} (got {})", text, jsonTypeName(v)));
-    }
-    const auto s = v.get<std::string>();
+    const auto s = v->get<std::string>();
     if (std::find(allowed.begin(), allowed.end(), s) == allowed.end()) {
-        refuse(key, v, text);
+        refuse(key, *v, text);
     }
     return s;
 }
