@@ -85,6 +85,43 @@ std::vector<std::string> testKinds(const ExperimentConfig& c) {
     return out;
 }
 
+/// The value an experiment holds at `Path`: a member, or a member of a member.
+template <auto... Path>
+auto field(const ExperimentConfig& c) {
+    return (c.*....*Path);
+}
+
+/// A read-only property of Experiment that gives a value the experiment holds.
+struct ExperimentProperty {
+    const char* name;
+    py::cpp_function get;
+    const char* doc;
+};
+
+std::vector<ExperimentProperty> experimentProperties() {
+    using E = ExperimentConfig;
+    return {
+        {"text", py::cpp_function(&field<&E::sourceText>),
+         "The experiment's JSON text, as stored in a run file."},
+        {"name", py::cpp_function(&field<&E::name>), "Its name."},
+        {"source", py::cpp_function(&field<&E::sourcePath>),
+         "The file (or the name) it was read from."},
+        {"grain_count", py::cpp_function(&field<&E::assembly, &AssemblySpec::grainCount>),
+         "Grains in the assembly."},
+        {"seed", py::cpp_function(&field<&E::assembly, &AssemblySpec::seed>),
+         "The assembly's random seed."},
+        {"time_step", py::cpp_function(&field<&E::parameters, &SimulationParameters::timeStep>),
+         "The time step [s]."},
+        {"threads", py::cpp_function(&field<&E::parameters, &SimulationParameters::threads>),
+         "Engine threads the file asks for (results are the same bits for any)."},
+        {"compaction_pressures",
+         py::cpp_function(&field<&E::compaction, &CompactionSpec::pressures>),
+         "Confining pressures of the compaction stages [Pa]."},
+        {"shear_pressures", py::cpp_function(&field<&E::shear, &ShearSpec::pressures>),
+         "The samples that are tested, by pressure [Pa]."},
+    };
+}
+
 } // namespace
 
 py::dict rowDict(const std::vector<double>& row) {
@@ -99,43 +136,21 @@ py::dict rowDict(const std::vector<double>& row) {
 }
 
 void bindExperiment(py::module_& m) {
-    py::class_<ExperimentConfig>(m, "Experiment", R"doc(
+    py::class_<ExperimentConfig> experiment(m, "Experiment", R"doc(
 An experiment: everything one experiment file says, validated as `grainlab run` validates it.
 
 Make one with Experiment.load(path), Experiment.from_dict(d) or Experiment.from_text(json_text);
 a bad file or dict raises ExperimentError naming the key and the allowed range. An Experiment
-does not change: with_changes() (added in Python) gives a new, validated one.)doc")
+does not change: with_changes() (added in Python) gives a new, validated one.)doc");
+    experiment
         .def_static("load", &readExperimentFile, py::arg("path"),
                     "Reads and validates an experiment file (JSON).")
         .def_static("from_text", &fromText, py::arg("text"), py::arg("name") = "<text>",
-                    "Validates experiment JSON text; `name` names it in error messages.")
-        .def_property_readonly(
-            "text", [](const ExperimentConfig& c) { return c.sourceText; },
-            "The experiment's JSON text, as stored in a run file.")
-        .def_property_readonly(
-            "name", [](const ExperimentConfig& c) { return c.name; }, "Its name.")
-        .def_property_readonly(
-            "source", [](const ExperimentConfig& c) { return c.sourcePath; },
-            "The file (or the name) it was read from.")
-        .def_property_readonly(
-            "grain_count", [](const ExperimentConfig& c) { return c.assembly.grainCount; },
-            "Grains in the assembly.")
-        .def_property_readonly(
-            "seed", [](const ExperimentConfig& c) { return c.assembly.seed; },
-            "The assembly's random seed.")
-        .def_property_readonly(
-            "time_step", [](const ExperimentConfig& c) { return c.parameters.timeStep; },
-            "The time step [s].")
-        .def_property_readonly(
-            "threads", [](const ExperimentConfig& c) { return c.parameters.threads; },
-            "Engine threads the file asks for (results are the same bits for any).")
-        .def_property_readonly(
-            "compaction_pressures",
-            [](const ExperimentConfig& c) { return c.compaction.pressures; },
-            "Confining pressures of the compaction stages [Pa].")
-        .def_property_readonly(
-            "shear_pressures", [](const ExperimentConfig& c) { return c.shear.pressures; },
-            "The samples that are tested, by pressure [Pa].")
+                    "Validates experiment JSON text; `name` names it in error messages.");
+    for (const ExperimentProperty& p : experimentProperties()) {
+        experiment.def_property_readonly(p.name, p.get, p.doc);
+    }
+    experiment
         .def_property_readonly("tests", &testKinds,
                                "The test kinds each sample gets, in order ('drained', ...).")
         .def(
@@ -157,11 +172,8 @@ does not change: with_changes() (added in Python) gives a new, validated one.)do
     m.def(
         "series_columns",
         [] {
-            py::list out;
-            for (const SeriesColumn& c : seriesColumns()) {
-                out.append(py::make_tuple(c.name, c.unit));
-            }
-            return out;
+            return listOf(seriesColumns(),
+                          [](const SeriesColumn& c) { return py::make_tuple(c.name, c.unit); });
         },
         "The columns of a series (series.csv), in order, as (name, unit) pairs; 'stage' is the "
         "text column.");

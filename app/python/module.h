@@ -32,6 +32,16 @@ void bindExperiment(py::module_& m);
 void bindSimulation(py::module_& m);
 void bindRuns(py::module_& m);
 
+/// A list of `make(item)` for each of `items`, in their order.
+template <typename Items, typename Make>
+py::list listOf(const Items& items, Make&& make) {
+    py::list out;
+    for (const auto& item : items) {
+        out.append(make(item));
+    }
+    return out;
+}
+
 /// The columns of a series row (seriesColumns() without `stage`), as a dict name -> value.
 py::dict rowDict(const std::vector<double>& row);
 /// The touching contacts as a dict of arrays (Simulation.contacts()).

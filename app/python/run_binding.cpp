@@ -20,6 +20,7 @@ namespace grainlab::python {
 namespace {
 
 namespace fs = std::filesystem;
+using namespace pybind11::literals;
 
 /// An experiment played from Python: into a run folder (a RunSession, as `grainlab run`) or in
 /// memory (no output).
@@ -45,20 +46,12 @@ struct PyRunner {
 };
 
 py::dict progressDict(const RunProgress& p) {
-    py::dict d;
-    d["stage"] = p.stage;
-    d["kind"] = stageKindName(p.kind);
-    d["test"] = p.test;
-    d["pressure"] = p.pressure;
-    d["step"] = p.step;
-    d["axial_strain"] = p.axialStrain;
-    d["fraction"] = p.fraction;
-    d["finished"] = p.finished;
-    return d;
+    return py::dict("stage"_a = p.stage, "kind"_a = stageKindName(p.kind), "test"_a = p.test,
+                    "pressure"_a = p.pressure, "step"_a = p.step, "axial_strain"_a = p.axialStrain,
+                    "fraction"_a = p.fraction, "finished"_a = p.finished);
 }
 
 py::dict tableDict(const SeriesTable& t) {
-    py::dict d;
     py::list names, units;
     for (const SeriesColumn& c : t.columns) {
         names.append(c.name);
@@ -72,26 +65,15 @@ py::dict tableDict(const SeriesTable& t) {
             w(r, c) = t.rows[r][c];
         }
     }
-    d["test"] = t.test;
-    d["columns"] = names;
-    d["units"] = units;
-    d["values"] = values;
-    d["stages"] = t.stages;
-    return d;
+    return py::dict("test"_a = t.test, "columns"_a = names, "units"_a = units, "values"_a = values,
+                    "stages"_a = t.stages);
 }
 
 py::list warningsList(const std::vector<RunWarning>& all) {
-    py::list out;
-    for (const RunWarning& w : all) {
-        py::dict d;
-        d["kind"] = w.kind;
-        d["test"] = w.test;
-        d["step"] = w.step;
-        d["axial_strain"] = w.axialStrain;
-        d["text"] = w.text;
-        out.append(d);
-    }
-    return out;
+    return listOf(all, [](const RunWarning& w) {
+        return py::dict("kind"_a = w.kind, "test"_a = w.test, "step"_a = w.step,
+                        "axial_strain"_a = w.axialStrain, "text"_a = w.text);
+    });
 }
 
 /// Advances with the GIL released; a blow-up marks the runner failed (its folder keeps the last
@@ -178,32 +160,26 @@ struct PyRunFolder {
 };
 
 py::dict storedContactsDict(const StoredContacts& c) {
-    py::dict d;
     const auto arr = [](const auto& v) {
         using T = typename std::decay_t<decltype(v)>::value_type;
         return py::array(py::dtype::of<T>(), {static_cast<py::ssize_t>(v.size())}, {sizeof(T)},
                          v.data());
     };
-    d["first"] = arr(c.first);
-    d["second"] = arr(c.second);
-    d["shift1"] = arr(c.shift1);
-    d["shift2"] = arr(c.shift2);
-    d["normal1"] = arr(c.normal1);
-    d["normal2"] = arr(c.normal2);
-    d["point1"] = arr(c.point1);
-    d["point2"] = arr(c.point2);
-    d["branch1"] = arr(c.branch1);
-    d["branch2"] = arr(c.branch2);
-    d["overlap"] = arr(c.overlap);
-    d["normal_force"] = arr(c.normalForce);
-    d["tangential_force"] = arr(c.tangentialForce);
-    d["sliding"] = arr(c.sliding);
-    d["strong"] = arr(c.strong);
-    d["load_bearing"] = arr(c.loadBearing);
-    d["centre1"] = arr(c.centre1);
-    d["centre2"] = arr(c.centre2);
-    d["strong_threshold"] = c.strongThreshold;
-    return d;
+    return py::dict(
+        "first"_a = arr(c.first), "second"_a = arr(c.second), "shift1"_a = arr(c.shift1),
+        "shift2"_a = arr(c.shift2), "normal1"_a = arr(c.normal1), "normal2"_a = arr(c.normal2),
+        "point1"_a = arr(c.point1), "point2"_a = arr(c.point2), "branch1"_a = arr(c.branch1),
+        "branch2"_a = arr(c.branch2), "overlap"_a = arr(c.overlap),
+        "normal_force"_a = arr(c.normalForce), "tangential_force"_a = arr(c.tangentialForce),
+        "sliding"_a = arr(c.sliding), "strong"_a = arr(c.strong),
+        "load_bearing"_a = arr(c.loadBearing), "centre1"_a = arr(c.centre1),
+        "centre2"_a = arr(c.centre2), "strong_threshold"_a = c.strongThreshold);
+}
+
+/// A method of RunFolder: what `Read` reads from the run file under `key`, as `Convert` gives it.
+template <auto Read, auto Convert>
+py::dict fromRunFile(const PyRunFolder& f, const std::string& key) {
+    return Convert(Read(f.runFile, key));
 }
 
 } // namespace
@@ -307,14 +283,7 @@ finished). A callback returning False stops the run (in a run folder: a checkpoi
             "A new Simulation from a copy of the current state (stepping it leaves the run "
             "alone).")
         .def(
-            "tables",
-            [](PyRunner& r) {
-                py::list out;
-                for (const SeriesTable& t : r.runner().series()) {
-                    out.append(tableDict(t));
-                }
-                return out;
-            },
+            "tables", [](PyRunner& r) { return listOf(r.runner().series(), tableDict); },
             "Every test's series so far, raw (see series()).")
         .def_property_readonly(
             "row_counts",
@@ -385,29 +354,17 @@ on (what is read is what was flushed).)doc")
         .def_property_readonly(
             "checkpoints",
             [](const PyRunFolder& f) {
-                py::list out;
-                for (const CheckpointInfo& c : listCheckpointInfo(f.runFile)) {
-                    py::dict d;
-                    d["name"] = c.name;
-                    d["kind"] = c.stageKind;
-                    d["test"] = c.test;
-                    d["pressure"] = c.pressure;
-                    d["step"] = c.step;
-                    d["axial_strain"] = c.axialStrain;
-                    d["peak"] = c.peak;
-                    d["peak_stress_ratio"] = c.peakStressRatio;
-                    out.append(d);
-                }
-                return out;
+                return listOf(listCheckpointInfo(f.runFile), [](const CheckpointInfo& c) {
+                    return py::dict("name"_a = c.name, "kind"_a = c.stageKind, "test"_a = c.test,
+                                    "pressure"_a = c.pressure, "step"_a = c.step,
+                                    "axial_strain"_a = c.axialStrain, "peak"_a = c.peak,
+                                    "peak_stress_ratio"_a = c.peakStressRatio);
+                });
             },
             "Every complete checkpoint in write order: dicts of name, kind, test, pressure, "
             "step, axial_strain, peak (the checkpoint at the peak of q/p of its test).")
-        .def(
-            "table",
-            [](const PyRunFolder& f, const std::string& test) {
-                return tableDict(readSeries(f.runFile, test));
-            },
-            py::arg("test"), "The series of `test`, raw (see series()).")
+        .def("table", &fromRunFile<readSeries, tableDict>, py::arg("test"),
+             "The series of `test`, raw (see series()).")
         .def_property_readonly(
             "warnings", [](const PyRunFolder& f) { return warningsList(readWarnings(f.runFile)); })
         .def(
@@ -426,15 +383,10 @@ on (what is read is what was flushed).)doc")
             py::kw_only(), py::arg("checkpoint") = py::none(), py::arg("sample") = py::none(),
             "A Simulation from a checkpoint's state or a compacted sample, bit for bit as "
             "stored (stepping it continues the run's physics).")
-        .def(
-            "contacts",
-            [](const PyRunFolder& f, const std::string& checkpoint) {
-                return storedContactsDict(readContacts(f.runFile, checkpoint));
-            },
-            py::arg("checkpoint"),
-            "The contacts stored with a checkpoint, as the run file holds them: a dict of "
-            "arrays (first, second, normal1/2, point1/2, normal_force, tangential_force, "
-            "sliding, strong, ...).")
+        .def("contacts", &fromRunFile<readContacts, storedContactsDict>, py::arg("checkpoint"),
+             "The contacts stored with a checkpoint, as the run file holds them: a dict of "
+             "arrays (first, second, normal1/2, point1/2, normal_force, tangential_force, "
+             "sliding, strong, ...).")
         .def("__repr__", [](const PyRunFolder& f) {
             return fmt::format("<grainlab.RunFolder '{}'>", f.folder);
         });

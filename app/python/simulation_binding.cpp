@@ -18,6 +18,7 @@ namespace grainlab::python {
 namespace {
 
 using Array = py::array_t<double>;
+using namespace pybind11::literals;
 
 /// A read-only NumPy view of an engine array, keeping `owner` (the Python Simulation) alive.
 template <typename T>
@@ -92,6 +93,24 @@ std::string shapeText(const py::array& a) {
     return out + (a.ndim() == 1 ? ",)" : ")");
 }
 
+/// `value` (`name` in messages) as C-ordered doubles, one row of `columns` values per grain of
+/// `n` (a 1-d array of n values for one column); refuses another shape with ValueError.
+py::array_t<double, py::array::c_style> perGrain(const py::object& value, const char* name,
+                                                 std::size_t n, int columns) {
+    const py::array a = numericArray(value, name);
+    const bool fits = columns == 1
+                          ? a.ndim() == 1 && a.shape(0) == py::ssize_t(n)
+                          : a.ndim() == 2 && a.shape(0) == py::ssize_t(n) && a.shape(1) == columns;
+    if (!fits) {
+        throw std::invalid_argument(
+            columns == 1 ? fmt::format("{}: shape {}; must be ({},), one value per grain", name,
+                                       shapeText(a), n)
+                         : fmt::format("{}: shape {}; must be ({}, {}), one row per grain", name,
+                                       shapeText(a), n, columns));
+    }
+    return asDoubles(a);
+}
+
 PySimulation& usable(PySimulation& s) {
     if (!s.failure.empty()) {
         throw std::runtime_error("this simulation failed (" + s.failure +
@@ -146,19 +165,20 @@ std::vector<double> measureRow(const PySimulation& s, const MeasureSet& m) {
     return seriesRow(m, in);
 }
 
+/// Member `member` of each void cell, in the cells' order.
+template <typename T>
+std::vector<T> cellColumn(const std::vector<VoidCell>& cells, T VoidCell::*member) {
+    std::vector<T> out;
+    out.reserve(cells.size());
+    for (const VoidCell& c : cells) {
+        out.push_back(c.*member);
+    }
+    return out;
+}
+
 py::dict voidCellsDict(const VoidCellSet& set) {
-    const std::size_t n = set.cells.size();
-    std::vector<std::int32_t> valence(n);
-    std::vector<double> area(n), elongation(n), direction(n), c1(n), c2(n);
     py::list polygons, grains;
-    for (std::size_t k = 0; k < n; ++k) {
-        const VoidCell& c = set.cells[k];
-        valence[k] = c.valence;
-        area[k] = c.area;
-        elongation[k] = c.elongation;
-        direction[k] = c.direction;
-        c1[k] = c.centroid1;
-        c2[k] = c.centroid2;
+    for (const VoidCell& c : set.cells) {
         std::vector<double> v1(c.vertices1), v2(c.vertices2);
         for (std::size_t j = 0; j < v1.size(); ++j) {
             v1[j] += c.centroid1;
@@ -167,18 +187,15 @@ py::dict voidCellsDict(const VoidCellSet& set) {
         polygons.append(pairs(v1, v2));
         grains.append(copyOf(c.grains));
     }
-    py::dict d;
-    d["valence"] = copyOf(valence);
-    d["area"] = copyOf(area);
-    d["elongation"] = copyOf(elongation);
-    d["direction"] = copyOf(direction);
-    d["centroid"] = pairs(c1, c2);
-    d["polygons"] = polygons;
-    d["grains"] = grains;
-    d["valence_histogram"] = copyOf(set.valenceHistogram);
-    d["cellular"] = set.cellular;
-    d["problem"] = set.problem;
-    return d;
+    const auto column = [&](auto member) { return copyOf(cellColumn(set.cells, member)); };
+    return py::dict("valence"_a = column(&VoidCell::valence), "area"_a = column(&VoidCell::area),
+                    "elongation"_a = column(&VoidCell::elongation),
+                    "direction"_a = column(&VoidCell::direction),
+                    "centroid"_a = pairs(cellColumn(set.cells, &VoidCell::centroid1),
+                                         cellColumn(set.cells, &VoidCell::centroid2)),
+                    "polygons"_a = polygons, "grains"_a = grains,
+                    "valence_histogram"_a = copyOf(set.valenceHistogram),
+                    "cellular"_a = set.cellular, "problem"_a = set.problem);
 }
 
 AxisControl axisControl(const std::string& mode, double rate, double stress, double slope,
@@ -214,31 +231,63 @@ py::dict contactsDict(const ContactNetwork& net) {
         f1[k] = f[0];
         f2[k] = f[1];
     }
-    py::dict d;
-    d["first"] = copyOf(c.first);
-    d["second"] = copyOf(c.second);
     py::array_t<std::int32_t> shift({static_cast<py::ssize_t>(n), py::ssize_t(2)});
     auto w = shift.mutable_unchecked<2>();
     for (std::size_t k = 0; k < n; ++k) {
         w(k, 0) = c.shift1[k];
         w(k, 1) = c.shift2[k];
     }
-    d["shift"] = shift;
-    d["normal"] = pairs(c.normal1, c.normal2);
-    d["point"] = pairs(c.point1, c.point2);
-    d["branch"] = pairs(c.branch1, c.branch2);
-    d["overlap"] = copyOf(c.overlap);
-    d["normal_force"] = copyOf(c.normalForce);
-    d["tangential_force"] = copyOf(c.tangentialForce);
-    d["force"] = pairs(f1, f2);
-    d["sliding"] = boolsOf(c.sliding);
-    return d;
+    return py::dict("first"_a = copyOf(c.first), "second"_a = copyOf(c.second), "shift"_a = shift,
+                    "normal"_a = pairs(c.normal1, c.normal2), "point"_a = pairs(c.point1, c.point2),
+                    "branch"_a = pairs(c.branch1, c.branch2), "overlap"_a = copyOf(c.overlap),
+                    "normal_force"_a = copyOf(c.normalForce),
+                    "tangential_force"_a = copyOf(c.tangentialForce), "force"_a = pairs(f1, f2),
+                    "sliding"_a = boolsOf(c.sliding));
 }
 
 PySimulation::PySimulation(SimulationState state)
     : sim(std::make_unique<Simulation>(std::move(state))), referenceCell(sim->cell()) {}
 
 namespace {
+
+/// Member `member` of each grain's shape, in the grains' order (a copy).
+py::array shapeColumn(const PySimulation& s, double OvalShape::*member) {
+    const SimulationState& st = s.sim->stateRef();
+    std::vector<double> out(st.grains.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        out[i] = st.shapes[st.grains.shape[i]].*member;
+    }
+    return copyOf(out);
+}
+
+/// A live read-only view of the grain array `Member` of the Simulation `self`.
+template <auto Member>
+py::array grainView(py::object self) {
+    return view(self.cast<PySimulation&>().sim->stateRef().grains.*Member, self);
+}
+
+/// A property of Simulation that is a live read-only view of a grain array.
+struct GrainView {
+    const char* name;
+    py::array (*get)(py::object self);
+    const char* doc;
+};
+
+const GrainView kGrainViews[] = {
+    {"x1", &grainView<&GrainArrays::x1>,
+     "Grain centres along x1 (axial) [m], a live read-only view."},
+    {"x2", &grainView<&GrainArrays::x2>, "Grain centres along x2 [m], a live read-only view."},
+    {"theta", &grainView<&GrainArrays::theta>,
+     "Orientations of the grains' long axes from x1 [rad], a live read-only view."},
+    {"v1", &grainView<&GrainArrays::v1>,
+     "Fluctuating velocities along x1 [m/s] (the cell's affine motion excluded), a view."},
+    {"v2", &grainView<&GrainArrays::v2>,
+     "Fluctuating velocities along x2 [m/s], a live read-only view."},
+    {"omega", &grainView<&GrainArrays::omega>,
+     "Angular velocities [rad/s], a live read-only view."},
+    {"shape", &grainView<&GrainArrays::shape>,
+     "Each grain's index into the shape table (widths, heights), a live read-only view."},
+};
 
 /// Making one, stepping it, and its state and arrays.
 void bindSimulationState(py::class_<PySimulation>& simulation) {
@@ -270,49 +319,11 @@ void bindSimulationState(py::class_<PySimulation>& simulation) {
             "Contact friction coefficient mu [-].")
         .def_property_readonly(
             "failure", [](PySimulation& s) { return s.failure; },
-            "Why the simulation failed ('' while it has not).")
-        .def_property_readonly(
-            "x1",
-            [](py::object self) {
-                return view(self.cast<PySimulation&>().sim->stateRef().grains.x1, self);
-            },
-            "Grain centres along x1 (axial) [m], a live read-only view.")
-        .def_property_readonly(
-            "x2",
-            [](py::object self) {
-                return view(self.cast<PySimulation&>().sim->stateRef().grains.x2, self);
-            },
-            "Grain centres along x2 [m], a live read-only view.")
-        .def_property_readonly(
-            "theta",
-            [](py::object self) {
-                return view(self.cast<PySimulation&>().sim->stateRef().grains.theta, self);
-            },
-            "Orientations of the grains' long axes from x1 [rad], a live read-only view.")
-        .def_property_readonly(
-            "v1",
-            [](py::object self) {
-                return view(self.cast<PySimulation&>().sim->stateRef().grains.v1, self);
-            },
-            "Fluctuating velocities along x1 [m/s] (the cell's affine motion excluded), a view.")
-        .def_property_readonly(
-            "v2",
-            [](py::object self) {
-                return view(self.cast<PySimulation&>().sim->stateRef().grains.v2, self);
-            },
-            "Fluctuating velocities along x2 [m/s], a live read-only view.")
-        .def_property_readonly(
-            "omega",
-            [](py::object self) {
-                return view(self.cast<PySimulation&>().sim->stateRef().grains.omega, self);
-            },
-            "Angular velocities [rad/s], a live read-only view.")
-        .def_property_readonly(
-            "shape",
-            [](py::object self) {
-                return view(self.cast<PySimulation&>().sim->stateRef().grains.shape, self);
-            },
-            "Each grain's index into the shape table (widths, heights), a live read-only view.")
+            "Why the simulation failed ('' while it has not).");
+    for (const GrainView& v : kGrainViews) {
+        simulation.def_property_readonly(v.name, v.get, v.doc);
+    }
+    simulation
         .def_property_readonly(
             "positions",
             [](PySimulation& s) {
@@ -326,26 +337,10 @@ void bindSimulationState(py::class_<PySimulation>& simulation) {
             },
             "Fluctuating velocities, an (N, 2) copy [m/s].")
         .def_property_readonly(
-            "widths",
-            [](PySimulation& s) {
-                const SimulationState& st = s.sim->stateRef();
-                std::vector<double> w(st.grains.size());
-                for (std::size_t i = 0; i < w.size(); ++i) {
-                    w[i] = st.shapes[st.grains.shape[i]].width;
-                }
-                return copyOf(w);
-            },
+            "widths", [](PySimulation& s) { return shapeColumn(s, &OvalShape::width); },
             "Grain widths W (long axis) [m], a copy.")
         .def_property_readonly(
-            "heights",
-            [](PySimulation& s) {
-                const SimulationState& st = s.sim->stateRef();
-                std::vector<double> h(st.grains.size());
-                for (std::size_t i = 0; i < h.size(); ++i) {
-                    h[i] = st.shapes[st.grains.shape[i]].height;
-                }
-                return copyOf(h);
-            },
+            "heights", [](PySimulation& s) { return shapeColumn(s, &OvalShape::height); },
             "Grain heights H (short axis) [m], a copy; H/W is the aspect ratio.")
         .def_property_readonly(
             "masses", [](PySimulation& s) { return copyOf(s.sim->grainMass()); },
@@ -379,15 +374,10 @@ void bindSimulationControls(py::class_<PySimulation>& simulation) {
                     throw std::invalid_argument(fmt::format("axis {}: must be 1 or 2", axis));
                 }
                 const AxisControl& c = s.sim->stateRef().axes[axis - 1];
-                py::dict d;
-                d["mode"] = modeName(c.mode);
-                d["rate"] = c.strainRate;
-                d["stress"] = c.targetStress;
-                d["slope"] = c.pathSlope;
-                d["origin"] = c.pathOrigin;
-                d["area"] = c.referenceArea;
-                d["length"] = c.referenceLength;
-                return d;
+                return py::dict("mode"_a = modeName(c.mode), "rate"_a = c.strainRate,
+                                "stress"_a = c.targetStress, "slope"_a = c.pathSlope,
+                                "origin"_a = c.pathOrigin, "area"_a = c.referenceArea,
+                                "length"_a = c.referenceLength);
             },
             py::arg("axis"), "How axis 1 (x1) or 2 (x2) is driven, as a dict.")
         .def(
@@ -428,13 +418,7 @@ of that reference length); 'stress': sigma_ii held at `stress` [Pa] by the servo
                 const std::size_t n = st.grains.size();
                 std::vector<double> v1 = st.grains.v1, v2 = st.grains.v2, w = st.grains.omega;
                 if (!velocities.is_none()) {
-                    const py::array a = numericArray(velocities, "velocities");
-                    if (a.ndim() != 2 || a.shape(0) != py::ssize_t(n) || a.shape(1) != 2) {
-                        throw std::invalid_argument(
-                            fmt::format("velocities: shape {}; must be ({}, 2), one row per grain",
-                                        shapeText(a), n));
-                    }
-                    const auto converted = asDoubles(a);
+                    const auto converted = perGrain(velocities, "velocities", n, 2);
                     const auto v = converted.unchecked<2>();
                     for (std::size_t i = 0; i < n; ++i) {
                         v1[i] = v(i, 0);
@@ -442,13 +426,7 @@ of that reference length); 'stress': sigma_ii held at `stress` [Pa] by the servo
                     }
                 }
                 if (!omega.is_none()) {
-                    const py::array a = numericArray(omega, "omega");
-                    if (a.ndim() != 1 || a.shape(0) != py::ssize_t(n)) {
-                        throw std::invalid_argument(
-                            fmt::format("omega: shape {}; must be ({},), one value per grain",
-                                        shapeText(a), n));
-                    }
-                    const auto converted = asDoubles(a);
+                    const auto converted = perGrain(omega, "omega", n, 1);
                     const auto o = converted.unchecked<1>();
                     for (std::size_t i = 0; i < n; ++i) {
                         w[i] = o(i);
