@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "chart_index.h"
 #include "grainlab/ui/charts_panel.h"
 #include "gui/experiment_run.h"
 #include "gui/main_window.h"
@@ -43,14 +44,7 @@ private:
     std::shared_ptr<std::atomic<bool>> slow_;
 };
 
-int chartIndex(const ChartsPanel& panel, const QString& name) {
-    for (int k = 0; k < panel.chartCount(); ++k) {
-        if (panel.definition(k).name == name) {
-            return k;
-        }
-    }
-    return -1;
-}
+using testing::chartIndex;
 
 TEST(CompactionView, ChartsTheCompactionWithProgressAndAnEta) {
     ExperimentConfig config = smallExperiment();

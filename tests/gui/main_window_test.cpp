@@ -22,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include "chart_index.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/run_file.h"
 #include "grainlab/ui/charts_panel.h"
@@ -405,12 +406,7 @@ TEST(MainWindow, OpensARunFileAndScrubsItsCheckpoints) {
     }
     EXPECT_TRUE(charted);
     // Its compaction series is on the charts' compaction page, against step.
-    int pressureChart = -1;
-    for (int k = 0; k < w.chartsPanel()->chartCount(); ++k) {
-        if (w.chartsPanel()->definition(k).name == QStringLiteral("compaction_p")) {
-            pressureChart = k;
-        }
-    }
+    const int pressureChart = testing::chartIndex(*w.chartsPanel(), QStringLiteral("compaction_p"));
     ASSERT_GE(pressureChart, 0);
     const SeriesTable compaction = readSeries(path.toStdString(), "compaction");
     const auto pressure =

@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include "chart_index.h"
 #include "cli/run_output.h"
 #include "common/atomic_file.h"
 #include "grainlab/csv_series.h"
@@ -43,15 +44,7 @@ RunState state(MainWindow& w) {
     return w.controller().status().state;
 }
 
-/// The index of the chart named `name`, or -1.
-int chartNamed(const ChartsPanel& charts, const QString& name) {
-    for (int k = 0; k < charts.chartCount(); ++k) {
-        if (charts.definition(k).name == name) {
-            return k;
-        }
-    }
-    return -1;
-}
+using testing::chartIndex;
 
 /// Pixels of chart `chart`'s plot area (not its legend, whose swatch has the colours too) within
 /// `tolerance` (sum over the channels) of `colour`, drawn as shown now.
@@ -285,7 +278,7 @@ TEST(WindowRun, AConstantVolumeTestChosenInTheParametersRunsAndDrawsItsStressPat
 
     // The stress-path chart: its points, and its curve drawn in the test's colour (pixels).
     ChartsPanel* charts = w.chartsPanel();
-    const int chart = chartNamed(*charts, QStringLiteral("q_vs_p"));
+    const int chart = chartIndex(*charts, QStringLiteral("q_vs_p"));
     ASSERT_GE(chart, 0);
     EXPECT_EQ(charts->curvePoints(chart, test, "q").size(), rows);
     charts->showPage(QStringLiteral("Stress paths"));
@@ -312,8 +305,8 @@ TEST(WindowRun, ACyclicTestRunsAndDrawsItsLoopsLiveCycleAndPressurePerCycle) {
     w.refresh();
     const std::string test = "p015kPa-cyclic";
     ChartsPanel* charts = w.chartsPanel();
-    const int loops = chartNamed(*charts, QStringLiteral("q_vs_eps1"));
-    const int perCycle = chartNamed(*charts, QStringLiteral("p_per_cycle"));
+    const int loops = chartIndex(*charts, QStringLiteral("q_vs_eps1"));
+    const int perCycle = chartIndex(*charts, QStringLiteral("p_per_cycle"));
     ASSERT_GE(loops, 0);
     ASSERT_GE(perCycle, 0);
     const auto points = charts->curvePoints(loops, test, "q");

@@ -13,27 +13,28 @@
 
 #include <gtest/gtest.h>
 
+#include "chart_index.h"
 #include "grainlab/ui/charts_panel.h"
 #include "test_scenes.h"
 
 namespace grainlab::ui {
 namespace {
 
-int chartIndex(const ChartsPanel& panel, const QString& name) {
-    for (int k = 0; k < panel.chartCount(); ++k) {
-        if (panel.definition(k).name == name) {
-            return k;
-        }
+using testing::chartIndex;
+
+/// A charts panel of `width` x 900 showing `tables`.
+class PanelOf : public ChartsPanel {
+public:
+    explicit PanelOf(const std::vector<SeriesTable>& tables, int width = 900) {
+        resize(width, 900);
+        setSeries(tables);
     }
-    return -1;
-}
+};
 
 TEST(ChartsPanel, OverlaysTestsInTheirColoursInDisplayUnits) {
-    ChartsPanel panel;
-    panel.resize(900, 900);
     const std::vector<SeriesTable> tables{testing::makeSeries("p15kPa", 200, 0.5),
                                           testing::makeSeries("p100kPa", 150, 0.4)};
-    panel.setSeries(tables);
+    PanelOf panel(tables);
     ASSERT_EQ(panel.chartCount(), 15); // six of the shear tests, five of paths, four compaction
     const int q = chartIndex(panel, QStringLiteral("q_over_p"));
     const int v = chartIndex(panel, QStringLiteral("epsv"));
@@ -78,9 +79,7 @@ TEST(ChartsPanel, StressPathsOfEveryTestKindInQAgainstPAndEAgainstLnP) {
         t.stages.push_back("constant_volume 25 kPa");
         t.stageKinds.push_back("constant_volume");
     }
-    ChartsPanel panel;
-    panel.resize(900, 900);
-    panel.setSeries({t});
+    PanelOf panel({t});
     const int qp = chartIndex(panel, QStringLiteral("q_vs_p"));
     const int ep = chartIndex(panel, QStringLiteral("e_vs_ln_p"));
     ASSERT_GE(qp, 0);
@@ -332,9 +331,7 @@ TEST(ChartsPanel, ChartsACyclicTestsPressurePerCycleAndItsLiveCycle) {
         addRow(t, "cyclic", eps1, p, 3e4 * eps1, 0.2);
     }
     ASSERT_EQ(upper, (std::vector<int>{10, 50, 90}));
-    ChartsPanel panel;
-    panel.resize(1000, 900);
-    panel.setSeries({t});
+    PanelOf panel({t}, 1000);
     const int pc = chartIndex(panel, QStringLiteral("p_per_cycle"));
     const int qe = chartIndex(panel, QStringLiteral("q_vs_eps1"));
     ASSERT_GE(pc, 0);

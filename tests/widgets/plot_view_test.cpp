@@ -22,6 +22,14 @@ PlotPainter threePoints() {
     return plot;
 }
 
+/// Shows `view` at 600 x 400 with the three points, and waits until it is on the screen.
+void showThreePoints(PlotView& view) {
+    view.resize(600, 400);
+    view.setPlot(threePoints());
+    view.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+}
+
 bool near(QColor a, QColor b, int tolerance = 8) {
     return std::abs(a.red() - b.red()) <= tolerance &&
            std::abs(a.green() - b.green()) <= tolerance &&
@@ -30,10 +38,7 @@ bool near(QColor a, QColor b, int tolerance = 8) {
 
 TEST(PlotView, DrawsEachPointWhereToPixelSays) {
     PlotView view;
-    view.resize(600, 400);
-    view.setPlot(threePoints());
-    view.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+    ASSERT_NO_FATAL_FAILURE(showThreePoints(view));
     const QImage drawn = view.grab().toImage();
     PlotPainter empty = threePoints();
     empty.points.clear();
@@ -57,10 +62,7 @@ TEST(PlotView, DrawsEachPointWhereToPixelSays) {
 
 TEST(PlotView, ReportsTheHoveredAndTheClickedPoint) {
     PlotView view;
-    view.resize(600, 400);
-    view.setPlot(threePoints());
-    view.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+    ASSERT_NO_FATAL_FAILURE(showThreePoints(view));
     QSignalSpy hovered(&view, &PlotView::pointHovered);
     QSignalSpy clicked(&view, &PlotView::pointClicked);
     const PlotPainter& plot = view.plot();
