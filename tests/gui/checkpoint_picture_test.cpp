@@ -16,6 +16,7 @@
 #include "common/run_file_view.h"
 #include "grainlab/ui/figure_export.h"
 #include "grainlab/ui/scene_renderer.h"
+#include "window_test_support.h"
 
 namespace grainlab::ui {
 namespace {
@@ -35,16 +36,10 @@ Result grainlab(const QStringList& arguments) {
 }
 
 TEST(CheckpointPicture, DrawsTheCheckpointAsTheWindowsRendererDoes) {
-    QDir work(QDir::temp().filePath(
-        QStringLiteral("grainlab-test-picture-%1").arg(QCoreApplication::applicationPid())));
-    work.removeRecursively();
-    ASSERT_TRUE(work.mkpath(QStringLiteral(".")));
+    QDir work = window_tests::freshTempFolder(QStringLiteral("picture"));
+    ASSERT_TRUE(work.exists());
     const QString run = work.filePath(QStringLiteral("run"));
-    ASSERT_EQ(grainlab({QStringLiteral("run"),
-                        QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/experiments/tiny.json"),
-                        QStringLiteral("--out"), run, QStringLiteral("--quiet")})
-                  .status,
-              0);
+    ASSERT_EQ(window_tests::runTinyExperiment(run), 0);
     const QString picture = work.filePath(QStringLiteral("p015.png"));
     const Result drawn = grainlab(
         {QStringLiteral("export"), QStringLiteral("picture"), run, QStringLiteral("--test"),

@@ -18,6 +18,8 @@
 namespace grainlab::ui {
 namespace {
 
+using window_tests::freshTempFolder;
+using window_tests::runTinyExperiment;
 using window_tests::waitFor;
 
 /// Every file under `folder` (relative path) with its bytes.
@@ -34,17 +36,10 @@ std::map<QString, QByteArray> files(const QString& folder) {
 }
 
 TEST(ParaViewExport, WritesTheCommandLinesFilesOfTheOpenRunFileWithoutWaiting) {
-    QDir work(QDir::temp().filePath(
-        QStringLiteral("grainlab-test-paraview-%1").arg(QCoreApplication::applicationPid())));
-    work.removeRecursively();
-    ASSERT_TRUE(work.mkpath(QStringLiteral(".")));
+    QDir work = freshTempFolder(QStringLiteral("paraview"));
+    ASSERT_TRUE(work.exists());
     const QString run = work.filePath(QStringLiteral("run"));
-    ASSERT_EQ(
-        QProcess::execute(QStringLiteral(GRAINLAB_EXE),
-                          {QStringLiteral("run"),
-                           QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/experiments/tiny.json"),
-                           QStringLiteral("--out"), run, QStringLiteral("--quiet")}),
-        0);
+    ASSERT_EQ(runTinyExperiment(run), 0);
 
     MainWindow w;
     w.setGrainlabExecutable(QStringLiteral(GRAINLAB_EXE));

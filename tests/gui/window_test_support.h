@@ -1,12 +1,15 @@
 #pragma once
 // What the window tests share: the small experiment (120 ovals, one confining pressure, shear to
 // 0.5 %) read from experiment text as a window run records it, an emptied folder for its runs,
-// waiting on the event loop, and clicking a toolbar action like a user.
+// a run of the tiny experiment by the grainlab executable, waiting on the event loop, and
+// clicking a toolbar action like a user.
 #include <chrono>
 #include <string>
 
 #include <QAction>
+#include <QCoreApplication>
 #include <QDir>
+#include <QProcess>
 #include <QTest>
 #include <QToolBar>
 
@@ -48,6 +51,26 @@ inline QString freshRunsFolder(const QString& name) {
     const QString runs = freshFolder(name);
     qputenv("GRAINLAB_RUNS_DIR", runs.toUtf8());
     return runs;
+}
+
+/// An empty folder grainlab-test-<name>-<pid> in the temporary folder (made: it exists unless
+/// it could not be).
+inline QDir freshTempFolder(const QString& name) {
+    QDir dir(QDir::temp().filePath(
+        QStringLiteral("grainlab-test-%1-%2").arg(name).arg(QCoreApplication::applicationPid())));
+    dir.removeRecursively();
+    dir.mkpath(QStringLiteral("."));
+    return dir;
+}
+
+/// `grainlab run` of the tiny experiment (resources/experiments/tiny.json) into `out`, quietly:
+/// its exit code (negative when it crashed or did not start).
+inline int runTinyExperiment(const QString& out) {
+    return QProcess::execute(
+        QStringLiteral(GRAINLAB_EXE),
+        {QStringLiteral("run"),
+         QStringLiteral(GRAINLAB_SOURCE_DIR "/resources/experiments/tiny.json"),
+         QStringLiteral("--out"), out, QStringLiteral("--quiet")});
 }
 
 template <class Predicate>
