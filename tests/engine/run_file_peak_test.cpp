@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli/run_output.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
 #include "grainlab/measures.h"
@@ -64,30 +65,6 @@ CheckpointInfo peakOf(const std::string& path, const std::string& test) {
     }
     EXPECT_EQ(peaks.size(), 1u) << test;
     return peaks.empty() ? CheckpointInfo{} : peaks.front();
-}
-
-/// What `grainlab run --resume` reads (app/cli/run_output.cpp, readResumePoint).
-ResumePoint resumePoint(const std::string& path) {
-    std::string last;
-    for (const CheckpointInfo& info : listCheckpointInfo(path)) {
-        if (!info.peak) {
-            last = info.name;
-        }
-    }
-    ResumePoint r;
-    r.state = readState(path, checkpointGroup(last));
-    r.runnerState = readRunnerState(path, checkpointGroup(last));
-    const std::string kept = ExperimentRunner::runningPeakCheckpoint(r.runnerState);
-    if (!kept.empty()) {
-        r.runningPeak = readState(path, runningPeakGroup(kept));
-    }
-    for (double p : listSamples(path)) {
-        r.samples[p] = readState(path, sampleGroup(p));
-    }
-    for (const std::string& test : listTests(path)) {
-        r.series.push_back(readSeries(path, test));
-    }
-    return r;
 }
 
 template <class T>
@@ -311,14 +288,18 @@ TEST_F(RunFilePeak, ResumedRunsWriteTheSamePeakCheckpoint) {
                 runner.checkpointNow("interrupted");
             }
             file.flush();
-            fs::copy_file(scratch() / "broken.h5", scratch() / fmt::format("case{}.h5", k),
+            const fs::path folder = scratch() / fmt::format("case{}", k);
+            fs::create_directories(folder);
+            fs::copy_file(scratch() / "broken.h5", folder / "run.h5",
                           fs::copy_options::overwrite_existing);
         }
     }
     for (std::size_t k = 0; k < stops.size(); ++k) {
         SCOPED_TRACE(stops[k].what);
-        const std::string path = (scratch() / fmt::format("case{}.h5", k)).string();
-        ResumePoint point = resumePoint(path);
+        // What `grainlab run --resume` reads from the stopped run's folder.
+        const fs::path folder = scratch() / fmt::format("case{}", k);
+        const std::string path = (folder / "run.h5").string();
+        ResumePoint point = RunOutputFolder::readResumePoint(folder.string());
         if (stops[k].expectKept >= 0) {
             EXPECT_EQ(point.runningPeak.has_value(), stops[k].expectKept == 1);
         }
