@@ -199,39 +199,44 @@ MainWindow::~MainWindow() {
     controller_.reset(); // joins the worker before the panels go
 }
 
+QAction* MainWindow::makeAction(const QString& text, const QKeySequence& shortcut,
+                                const QString& toolTip, void (MainWindow::*slot)()) {
+    auto* action = new QAction(text, this);
+    if (!shortcut.isEmpty()) {
+        action->setShortcut(shortcut);
+    }
+    if (!toolTip.isEmpty()) {
+        action->setToolTip(toolTip);
+    }
+    connect(action, &QAction::triggered, this, slot);
+    return action;
+}
+
 void MainWindow::buildActions() {
-    open_ = new QAction(tr("&Open experiment…"), this);
-    open_->setShortcut(QKeySequence::Open);
-    connect(open_, &QAction::triggered, this, &MainWindow::openExperimentDialog);
-    saveAs_ = new QAction(tr("&Save experiment as…"), this);
-    saveAs_->setShortcut(QKeySequence::SaveAs);
-    saveAs_->setToolTip(tr("Write the experiment as edited in the Parameters tab to a file that "
-                           "`grainlab run` reads"));
-    connect(saveAs_, &QAction::triggered, this, &MainWindow::saveExperimentDialog);
-    report_ = new QAction(tr("&Report…"), this);
-    report_->setToolTip(tr("Write the reference study's figure set and headline numbers of this "
-                           "run (or of the open run file) into its folder's report/ and open "
-                           "report.html (grainlab report)"));
-    connect(report_, &QAction::triggered, this, &MainWindow::writeReport);
-    paraview_ = new QAction(tr("&ParaView files…"), this);
-    paraview_->setToolTip(tr("Write every checkpoint of this run (or of the open run file) as "
-                             "VTK files with a .pvd time index per test, for ParaView (grainlab "
-                             "export vtk)"));
-    connect(paraview_, &QAction::triggered, this, &MainWindow::exportParaViewDialog);
-    start_ = new QAction(tr("Start"), this);
-    start_->setShortcut(Qt::Key_F5);
-    start_->setToolTip(tr("Start or resume the run (F5)"));
-    connect(start_, &QAction::triggered, this, &MainWindow::startRun);
-    pause_ = new QAction(tr("Pause"), this);
-    pause_->setShortcut(Qt::Key_F6);
-    connect(pause_, &QAction::triggered, this, &MainWindow::pauseRun);
-    step_ = new QAction(tr("Step"), this);
-    step_->setShortcut(Qt::Key_F7);
-    step_->setToolTip(tr("Advance by the given number of steps, then pause (F7)"));
-    connect(step_, &QAction::triggered, this, &MainWindow::stepRun);
-    stop_ = new QAction(tr("Stop"), this);
-    stop_->setToolTip(tr("End the run; Start then begins a new one"));
-    connect(stop_, &QAction::triggered, this, &MainWindow::stopRun);
+    open_ = makeAction(tr("&Open experiment…"), QKeySequence::Open, {},
+                       &MainWindow::openExperimentDialog);
+    saveAs_ = makeAction(tr("&Save experiment as…"), QKeySequence::SaveAs,
+                         tr("Write the experiment as edited in the Parameters tab to a file that "
+                            "`grainlab run` reads"),
+                         &MainWindow::saveExperimentDialog);
+    report_ = makeAction(tr("&Report…"), {},
+                         tr("Write the reference study's figure set and headline numbers of this "
+                            "run (or of the open run file) into its folder's report/ and open "
+                            "report.html (grainlab report)"),
+                         &MainWindow::writeReport);
+    paraview_ = makeAction(tr("&ParaView files…"), {},
+                           tr("Write every checkpoint of this run (or of the open run file) as "
+                              "VTK files with a .pvd time index per test, for ParaView (grainlab "
+                              "export vtk)"),
+                           &MainWindow::exportParaViewDialog);
+    start_ = makeAction(tr("Start"), Qt::Key_F5, tr("Start or resume the run (F5)"),
+                        &MainWindow::startRun);
+    pause_ = makeAction(tr("Pause"), Qt::Key_F6, {}, &MainWindow::pauseRun);
+    step_ = makeAction(tr("Step"), Qt::Key_F7,
+                       tr("Advance by the given number of steps, then pause (F7)"),
+                       &MainWindow::stepRun);
+    stop_ = makeAction(tr("Stop"), {}, tr("End the run; Start then begins a new one"),
+                       &MainWindow::stopRun);
 
     stepSize_ = new QSpinBox;
     stepSize_->setRange(1, 10000000);

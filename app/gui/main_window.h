@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <QElapsedTimer>
+#include <QKeySequence>
 #include <QMainWindow>
 #include <QTimer>
 
@@ -181,6 +182,9 @@ public slots:
 
 private:
     void buildActions();
+    /// An action of the window calling `slot`, with `shortcut` and `toolTip` when they are given.
+    QAction* makeAction(const QString& text, const QKeySequence& shortcut, const QString& toolTip,
+                        void (MainWindow::*slot)());
     void buildMenus();
     void updateControls(RunState state);
     /// Gives the controller the run Start or Step begins; false (and says why) when the edited
