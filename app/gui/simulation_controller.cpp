@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "gui/worker_thread.h"
+
 namespace grainlab::ui {
 namespace {
 
@@ -25,18 +27,11 @@ constexpr std::int64_t kMaxChunk = 1 << 20;
 SimulationController::SimulationController(QObject* parent) : QObject(parent) {
     qRegisterMetaType<grainlab::ui::RunState>();
     history_.setFinisher(&finisher_);
-    worker_.reset(QThread::create([this] { workerLoop(); }));
-    worker_->setObjectName(QStringLiteral("grainlab engine"));
-    worker_->start();
+    worker_ = startWorkerThread(QStringLiteral("grainlab engine"), [this] { workerLoop(); });
 }
 
 SimulationController::~SimulationController() {
-    {
-        std::lock_guard lock(mutex_);
-        quit_ = true;
-    }
-    wake_.notify_all();
-    worker_->wait();
+    quitWorkerThread(*worker_, mutex_, wake_, quit_);
 }
 
 void SimulationController::setRunFactory(RunFactory factory) {

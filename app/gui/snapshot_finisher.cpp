@@ -6,22 +6,15 @@
 
 #include <QtGlobal>
 
+#include "gui/worker_thread.h"
+
 namespace grainlab::ui {
 
-SnapshotFinisher::SnapshotFinisher() {
-    thread_.reset(QThread::create([this] { loop(); }));
-    thread_->setObjectName(QStringLiteral("grainlab snapshots"));
-    thread_->start();
-}
+SnapshotFinisher::SnapshotFinisher()
+    : thread_(startWorkerThread(QStringLiteral("grainlab snapshots"), [this] { loop(); })) {}
 
 SnapshotFinisher::~SnapshotFinisher() {
-    {
-        std::lock_guard lock(mutex_);
-        quit_ = true;
-        jobs_.clear();
-    }
-    wake_.notify_all();
-    thread_->wait();
+    quitWorkerThread(*thread_, mutex_, wake_, quit_, [this] { jobs_.clear(); });
 }
 
 void SnapshotFinisher::submit(std::shared_ptr<Snapshot> snapshot, Done done, bool replaceable) {
