@@ -18,14 +18,9 @@ module_dir="${4:-}"
 source "$(dirname "${BASH_SOURCE[0]}")/find_python.sh"
 find_python h5py numpy pandas matplotlib
 
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+make_work
 cd "$work" || exit 1
-if ! "$grainlab" run "$experiment" --out out --quiet > run.log 2>&1; then
-  echo "FAILED: grainlab run $experiment" >&2
-  cat run.log >&2
-  exit 1
-fi
+must_run run.log "grainlab run $experiment" "$grainlab" run "$experiment" --out out --quiet
 
 # Writes block k of a markdown file's ```python blocks to snippet-<name>-<k>.py; prints the count.
 extract() {

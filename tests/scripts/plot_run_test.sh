@@ -16,19 +16,11 @@ experiment="$3"
 source "$(dirname "${BASH_SOURCE[0]}")/find_python.sh"
 find_python h5py numpy matplotlib
 
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+make_work
 
-if ! "$grainlab" run "$experiment" --out "$work/run" > "$work/run.log" 2>&1; then
-  echo "FAILED: grainlab run $experiment" >&2
-  cat "$work/run.log" >&2
-  exit 1
-fi
-if ! "$python" "$script" "$work/run/run.h5" --out "$work/png" > "$work/plot.log" 2>&1; then
-  echo "FAILED: $script" >&2
-  cat "$work/plot.log" >&2
-  exit 1
-fi
+must_run "$work/run.log" "grainlab run $experiment" \
+  "$grainlab" run "$experiment" --out "$work/run"
+must_run "$work/plot.log" "$script" "$python" "$script" "$work/run/run.h5" --out "$work/png"
 
 PLOT_SCRIPT="$script" "$python" - "$work/png" "$work/run/run.h5" << 'CHECK'
 import glob

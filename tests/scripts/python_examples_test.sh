@@ -12,8 +12,7 @@ find_python numpy matplotlib nbconvert ipykernel
 module_dir="$1" exe="$2" source_dir="$3"
 export PYTHONPATH="$module_dir${PYTHONPATH:+:$PYTHONPATH}" MPLBACKEND=Agg OMP_NUM_THREADS=1
 examples="$source_dir/docs/examples"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+make_work
 cd "$work"
 fail() { echo "FAILED: $*" >&2; exit 1; }
 

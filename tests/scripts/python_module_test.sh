@@ -12,8 +12,7 @@ export PYTHONPATH="$module_dir${PYTHONPATH:+:$PYTHONPATH}"
 export GRAINLAB_EXE="$exe" GRAINLAB_SOURCE_DIR="$source_dir"
 # A single engine thread per simulation: ctest runs tests side by side on few cores.
 export OMP_NUM_THREADS="${OMP_NUM_THREADS:-1}"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+make_work
 cd "$work"
 exec "$python" -m pytest -q -p no:cacheprovider --basetemp="$work/tmp" \
   "$source_dir/tests/python" "$@"

@@ -18,24 +18,17 @@ experiment="$2"
 source "$(dirname "${BASH_SOURCE[0]}")/find_python.sh"
 find_python vtk h5py numpy
 
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+make_work
 failed=0
 fail() {
   echo "FAILED: $*" >&2
   failed=1
 }
 
-if ! "$grainlab" run "$experiment" --out "$work/run" --quiet > "$work/run.log" 2>&1; then
-  echo "FAILED: grainlab run $experiment" >&2
-  cat "$work/run.log" >&2
-  exit 1
-fi
-if ! "$grainlab" export vtk "$work/run" --out "$work/vtk" > "$work/export.log" 2>&1; then
-  echo "FAILED: grainlab export vtk" >&2
-  cat "$work/export.log" >&2
-  exit 1
-fi
+must_run "$work/run.log" "grainlab run $experiment" \
+  "$grainlab" run "$experiment" --out "$work/run" --quiet
+must_run "$work/export.log" "grainlab export vtk" \
+  "$grainlab" export vtk "$work/run" --out "$work/vtk"
 du -sh "$work/vtk"
 "$grainlab" export vtk "$work/run" --out "$work/every2" --every 2 --quiet || fail "--every 2"
 "$grainlab" export vtk "$work/run" --out "$work/strains" --strains 0,0.01 --quiet ||
