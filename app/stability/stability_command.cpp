@@ -138,17 +138,22 @@ std::vector<std::string> cellIds(const std::vector<Cell>& cells) {
     return ids;
 }
 
+/// The CellMap of a map of `cells` read as `spec`, whose tables `collect` writes (with
+/// `figures`).
+template <class Spec, class Cell, class FigureWriter>
+CellMap cellMap(const Spec& spec, const std::vector<Cell>& cells,
+                std::size_t (*collect)(const fs::path&, const Spec&, bool, const FigureWriter&),
+                const FigureWriter& figures) {
+    return {spec.name, cellIds(cells), [spec, collect, figures](const fs::path& d, bool quiet) {
+                return collect(d, spec, quiet, figures);
+            }};
+}
+
 CellMap cellMapOf(const fs::path& dir, const std::string& kind, const std::string& path,
                   const StabilityFigureWriter& figures, const ServoFigureWriter& servoFigures) {
-    CellMap map;
     if (kind == "servo") {
         const ServoMapSpec spec = readServoPreset(path);
-        map.name = spec.name;
-        map.ids = cellIds(servoCells(spec));
-        map.collect = [spec, servoFigures](const fs::path& d, bool quiet) {
-            return collectServo(d, spec, quiet, servoFigures);
-        };
-        return map;
+        return cellMap(spec, servoCells(spec), collectServo, servoFigures);
     }
     if (kind != "time_step") {
         throw std::runtime_error(fmt::format(
@@ -157,12 +162,7 @@ CellMap cellMapOf(const fs::path& dir, const std::string& kind, const std::strin
             dir.string(), kind));
     }
     const StabilityMapSpec spec = readStabilityPreset(path);
-    map.name = spec.name;
-    map.ids = cellIds(stabilityCells(spec));
-    map.collect = [spec, figures](const fs::path& d, bool quiet) {
-        return collectTimeStep(d, spec, quiet, figures);
-    };
-    return map;
+    return cellMap(spec, stabilityCells(spec), collectTimeStep, figures);
 }
 
 /// The kind of the map in a folder (its stability.json).
