@@ -6,6 +6,7 @@
 #include <fstream>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -17,41 +18,19 @@ namespace {
 static_assert(std::endian::native == std::endian::little,
               "the .vtp files are written as little-endian");
 
-const char* typeName(VtkArray::Type type) {
-    switch (type) {
-    case VtkArray::Type::Float64:
-        return "Float64";
-    case VtkArray::Type::Int64:
-        return "Int64";
-    case VtkArray::Type::Int32:
-        return "Int32";
-    default:
-        return "UInt8";
-    }
-}
-
-std::size_t typeSize(VtkArray::Type type) {
-    switch (type) {
-    case VtkArray::Type::Float64:
-    case VtkArray::Type::Int64:
-        return 8;
-    case VtkArray::Type::Int32:
-        return 4;
-    default:
-        return 1;
-    }
-}
-
-const void* arrayBytes(const VtkArray& a) {
+/// `use(values, type)` with the member that holds `a`'s values (the one its type reads) and the
+/// type's name in a .vtp file.
+template <class Use>
+auto withValues(const VtkArray& a, Use&& use) {
     switch (a.type) {
     case VtkArray::Type::Float64:
-        return a.float64.data();
+        return use(a.float64, "Float64");
     case VtkArray::Type::Int64:
-        return a.int64.data();
+        return use(a.int64, "Int64");
     case VtkArray::Type::Int32:
-        return a.int32.data();
+        return use(a.int32, "Int32");
     default:
-        return a.uint8.data();
+        return use(a.uint8, "UInt8");
     }
 }
 
@@ -76,27 +55,19 @@ private:
 
 std::string arrayElement(const VtkArray& a, AppendedData& appended, bool field,
                          const std::string& indent) {
-    const std::uint64_t offset = appended.add(arrayBytes(a), a.values() * typeSize(a.type));
+    const auto [type, offset] = withValues(a, [&](const auto& values, const char* name) {
+        return std::pair(name, appended.add(values.data(), values.size() * sizeof values[0]));
+    });
     std::string tuples = field ? fmt::format(" NumberOfTuples=\"{}\"", a.tuples()) : std::string();
     return fmt::format("{}<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\"{} "
                        "format=\"appended\" offset=\"{}\"/>\n",
-                       indent, typeName(a.type), markupEscaped(a.name), a.components, tuples,
-                       offset);
+                       indent, type, markupEscaped(a.name), a.components, tuples, offset);
 }
 
 } // namespace
 
 std::size_t VtkArray::values() const {
-    switch (type) {
-    case Type::Float64:
-        return float64.size();
-    case Type::Int64:
-        return int64.size();
-    case Type::Int32:
-        return int32.size();
-    default:
-        return uint8.size();
-    }
+    return withValues(*this, [](const auto& v, const char*) { return v.size(); });
 }
 
 namespace {
