@@ -100,6 +100,22 @@ struct RunResult {
     SimulationState final;    ///< for the 1-thread vs 2-thread comparison
 };
 
+/// Times `steps` steps of `kernel` (the engine's Simulation or the LimitKernel): grain-steps per
+/// second, and per grain the contacts and the pairs `pairCount(kernel)` counts after them.
+template <class Kernel, class PairCount>
+RunResult timeSteps(Kernel& kernel, std::int64_t steps, PairCount pairCount) {
+    const auto start = std::chrono::steady_clock::now();
+    kernel.advance(steps);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    RunResult r;
+    const double n = double(kernel.grainCount());
+    r.grainStepsPerSecond = n * double(steps) / seconds;
+    r.contactsPerGrain = 2.0 * double(kernel.contactCount()) / n;
+    r.pairsPerGrain = double(pairCount(kernel)) / n;
+    return r;
+}
+
 /// Biaxial compression from `dense`: axis 1 shortened at the engineering rate 0.2 /s, axis 2
 /// held at 100 kPa, mu = 0.5. Times `steps` steps (the neighbour list is built before).
 RunResult timeEngine(const SimulationState& dense, int threads, std::int64_t steps,
@@ -111,16 +127,9 @@ RunResult timeEngine(const SimulationState& dense, int threads, std::int64_t ste
     Simulation sim(std::move(state));
     sim.setAxisControl(0, AxisControl{AxisMode::Strain, kAxialStrainRate, dense.cell[0]});
     sim.setAxisControl(1, AxisControl{AxisMode::Stress, 0.0, kConfiningStress});
-    const auto start = std::chrono::steady_clock::now();
-    sim.advance(steps);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    RunResult r;
-    const double n = double(sim.grainCount());
-    r.bytesPerGrain = double(heapInUse() - heapBefore) / n;
-    r.grainStepsPerSecond = n * double(steps) / seconds;
-    r.contactsPerGrain = 2.0 * double(sim.contactCount()) / n;
-    r.pairsPerGrain = double(sim.stateRef().pairs.size()) / n;
+    RunResult r =
+        timeSteps(sim, steps, [](const Simulation& s) { return s.stateRef().pairs.size(); });
+    r.bytesPerGrain = double(heapInUse() - heapBefore) / double(sim.grainCount());
     r.rebuilds = sim.neighbourRebuilds();
     if (keepState) {
         r.final = sim.state();
@@ -134,15 +143,7 @@ RunResult timeLimit(const SimulationState& dense, int threads, std::int64_t step
     state.parameters.friction = 0.5;
     LimitKernel kernel(state, kAxialStrainRate, threads);
     const std::int64_t rebuildsBefore = kernel.rebuilds();
-    const auto start = std::chrono::steady_clock::now();
-    kernel.advance(steps);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    RunResult r;
-    const double n = double(kernel.grainCount());
-    r.grainStepsPerSecond = n * double(steps) / seconds;
-    r.contactsPerGrain = 2.0 * double(kernel.contactCount()) / n;
-    r.pairsPerGrain = double(kernel.pairCount()) / n;
+    RunResult r = timeSteps(kernel, steps, [](const LimitKernel& k) { return k.pairCount(); });
     r.rebuilds = kernel.rebuilds() - rebuildsBefore + 1; // as the engine counts: the first build
     return r;
 }
