@@ -28,8 +28,7 @@ std::size_t rows(const std::string& csv) {
 }
 
 TEST(ServoMapCommand, TinyMapEndToEndAndResumes) {
-    const fs::path dir = freshFolder("servo-tiny");
-    ASSERT_EQ(runStabilityPreset("servo-tiny", dir), 0);
+    const fs::path dir = presetRunFolder("servo-tiny");
     const ServoMapSpec spec = readServoPreset(stabilityPresetFile("servo-tiny"));
     const auto cells = servoCells(spec);
     ASSERT_EQ(cells.size(), 2u);
@@ -78,8 +77,7 @@ TEST(ServoMapCommand, TinyMapEndToEndAndResumes) {
 }
 
 TEST(GeometryMapCommand, TinyMapEndToEnd) {
-    const fs::path dir = freshFolder("geometry-tiny");
-    ASSERT_EQ(runStabilityPreset("geometry-tiny", dir), 0);
+    const fs::path dir = presetRunFolder("geometry-tiny");
     const std::string levels = text(dir / "geometry.csv");
     EXPECT_EQ(rows(levels), 3u * 3u); // three overlaps, three kernels
     EXPECT_NE(levels.find("overlap_fraction [-]"), std::string::npos);

@@ -26,8 +26,7 @@ using namespace test;
 const auto run = test::runQuietly;
 
 TEST(StabilityCommand, TinyMapEndToEndAndResumes) {
-    const fs::path dir = freshFolder("tiny");
-    ASSERT_EQ(runStabilityPreset("tiny", dir), 0);
+    const fs::path dir = presetRunFolder("tiny");
     const StabilityMapSpec spec = readStabilityPreset(stabilityPresetFile("tiny"));
     const auto cells = stabilityCells(spec);
     ASSERT_EQ(cells.size(), 4u);

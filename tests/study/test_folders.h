@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,17 @@ inline int runStability(const std::string& arguments) {
 inline int runStabilityPreset(const std::string& preset, const std::filesystem::path& out,
                               const std::string& then = "--quiet") {
     return runStability("--preset " + preset + " --out " + out.string() + " " + then);
+}
+
+/// A fresh folder named after the stability preset `preset` with the preset run into it (what
+/// the test cannot go on without: std::runtime_error, a failure of the test, when it fails).
+inline std::filesystem::path presetRunFolder(const std::string& preset) {
+    const std::filesystem::path dir = freshFolder(preset);
+    if (const int status = runStabilityPreset(preset, dir); status != 0) {
+        throw std::runtime_error("grainlab stability --preset " + preset + " --out " +
+                                 dir.string() + ": exit status " + std::to_string(status));
+    }
+    return dir;
 }
 #endif
 
