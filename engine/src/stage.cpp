@@ -1,5 +1,6 @@
 #include "stage.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -62,6 +63,55 @@ std::size_t planPosition(const std::vector<PlannedStage>& plan, StageKind kind, 
     throw std::runtime_error(fmt::format("resume: the runner state's stage ({} {}) is not a stage "
                                          "of this experiment",
                                          stageKindName(kind), index));
+}
+
+void TestStage::save(RunnerState& state, const RunContext& ctx) const {
+    state.voidsAtStart = voidsAtStart_;
+    state.peak.reset();
+    saveTest(state, ctx);
+}
+
+void TestStage::restore(const RunnerState& state, const RunContext& ctx,
+                        const SimulationState& resumed,
+                        std::optional<SimulationState> runningPeak) {
+    voidsAtStart_ = state.voidsAtStart;
+    restoreTest(state, ctx, resumed, std::move(runningPeak));
+}
+
+void LoadingTestStage::start(RunContext& ctx) {
+    ctx.stageStartStep = ctx.sim->stepCount();
+    ctx.setStrainReference();
+    forgetInitialVoids();
+    startTest(ctx);
+    ctx.checkpoint(ctx.checkpointLabel());
+}
+
+void LoadingTestStage::recordFirst(RunContext& ctx) {
+    const RecordSpec& every = ctx.config.record;
+    ctx.nextRecordStep = ctx.stageStartStep;
+    ctx.nextSnapshotStep = ctx.stageStartStep + ctx.strideOf(every.snapshotStrainInterval);
+    ctx.recordNow(); // eps1 = 0: N_vi
+    ctx.nextRecordStep = ctx.stageStartStep + ctx.strideOf(every.strainInterval);
+}
+
+std::int64_t LoadingTestStage::stepsToNextEvent(const RunContext& ctx) const {
+    return std::max<std::int64_t>(
+        1, std::min({ctx.nextRecordStep, ctx.nextSnapshotStep, nextTestEvent(ctx)}) -
+               ctx.sim->stepCount());
+}
+
+void LoadingTestStage::record(RunContext& ctx) {
+    const std::int64_t now = ctx.sim->stepCount();
+    ctx.recordNow();
+    ctx.nextRecordStep = now + ctx.strideOf(ctx.config.record.strainInterval);
+}
+
+void LoadingTestStage::checkpointWhenDue(RunContext& ctx) {
+    const std::int64_t now = ctx.sim->stepCount();
+    if (now >= ctx.nextSnapshotStep) {
+        ctx.checkpoint(ctx.checkpointLabel());
+        ctx.nextSnapshotStep = now + ctx.strideOf(ctx.config.record.snapshotStrainInterval);
+    }
 }
 
 std::unique_ptr<Stage> makeStage(const PlannedStage& planned) {

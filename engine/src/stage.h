@@ -121,7 +121,8 @@ private:
 
 /// What every test stage shares: it is a test (its eps1 is the test's), it ends with a
 /// checkpoint of its own, and N_vi, the void count of its first record, is the reference of its
-/// void-count columns (saved as voids_at_start).
+/// void-count columns (saved as voids_at_start). A test keeps no running peak in the runner state
+/// unless its saveTest() says so.
 class TestStage : public Stage {
 public:
     using Stage::Stage;
@@ -133,15 +134,49 @@ public:
     void noteRecord(const MeasureSet& measures) override {
         voidsAtStart_ = initialVoidCount(measures);
     }
+    void save(RunnerState& state, const RunContext& ctx) const final;
+    void restore(const RunnerState& state, const RunContext& ctx, const SimulationState& resumed,
+                 std::optional<SimulationState> runningPeak) final;
 
 protected:
     /// For start(): N_vi is taken again at the first record.
     void forgetInitialVoids() { voidsAtStart_ = -1; }
-    void saveInitialVoids(RunnerState& state) const { state.voidsAtStart = voidsAtStart_; }
-    void restoreInitialVoids(const RunnerState& state) { voidsAtStart_ = state.voidsAtStart; }
+    /// The test's own fields of the runner state, after N_vi (and an empty peak).
+    virtual void saveTest(RunnerState& state, const RunContext& ctx) const = 0;
+    /// Reads them back, after N_vi (arguments as restore()'s).
+    virtual void restoreTest(const RunnerState& state, const RunContext& ctx,
+                             const SimulationState& resumed,
+                             std::optional<SimulationState> kept) = 0;
 
 private:
     double voidsAtStart_ = -1; ///< N_vi of the test; -1 before its first record
+};
+
+/// What the tests that load the sample along their path share (monotonic and cyclic): they
+/// start where the stage starts, with a record there (eps1 = 0: N_vi) and a checkpoint; then a
+/// record every record.strain_interval of eps1 and a checkpoint every
+/// record.snapshot_strain_interval. Events fall on whole steps counted from the start of the
+/// test (each step adds the same engineering strain), so they do not depend on how advance() is
+/// chunked.
+class LoadingTestStage : public TestStage {
+public:
+    using TestStage::TestStage;
+    void start(RunContext& ctx) final;
+    std::int64_t stepsToNextEvent(const RunContext& ctx) const final;
+
+protected:
+    /// For start(), after the strain reference: the test's own state afresh, its axis controls
+    /// and its first record (recordFirst()), before the start's checkpoint.
+    virtual void startTest(RunContext& ctx) = 0;
+    /// The first record (eps1 = 0: N_vi), and the schedule of records and checkpoints.
+    static void recordFirst(RunContext& ctx);
+    /// The next step at which the test itself must look (its end, a reversal, a hand-over),
+    /// besides its records and checkpoints.
+    virtual std::int64_t nextTestEvent(const RunContext& ctx) const = 0;
+    /// A record now, the next one a strain interval on.
+    static void record(RunContext& ctx);
+    /// A checkpoint now if one is due, the next one a snapshot interval on.
+    static void checkpointWhenDue(RunContext& ctx);
 };
 
 /// The stage object for a plan entry.

@@ -8,10 +8,6 @@ void CompactionStage::start(RunContext& ctx) {
     if (index() == 0) {
         ctx.setStrainReference();
     }
-    // The first record at the first equilibrium check: events fall on whole steps counted
-    // from the stage's start, never where a caller's advance() happens to end.
-    ctx.nextRecordStep = ctx.stageStartStep + criterion(ctx.config).checkInterval;
-    ctx.nextSnapshotStep = ctx.sim->stepCount() + ctx.config.record.snapshotStepInterval;
 }
 
 void CompactionStage::finish(RunContext& ctx) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -24,11 +25,7 @@ void CyclicStage::driveAxis(RunContext& ctx, std::int64_t n) const {
     ctx.sim->setAxisControl(0, {AxisMode::Strain, rate, 0.0, ctx.length1At0});
 }
 
-void CyclicStage::start(RunContext& ctx) {
-    const ExperimentConfig& config = ctx.config;
-    ctx.stageStartStep = ctx.sim->stepCount();
-    ctx.setStrainReference();
-    forgetInitialVoids();
+void CyclicStage::startTest(RunContext& ctx) {
     direction_ = stressControl(ctx) ? 1 : 0; // q rises first
     reversals_ = 0;
     driveAxis(ctx, 0);
@@ -39,26 +36,20 @@ void CyclicStage::start(RunContext& ctx) {
     } else {
         ctx.sim->setAxisControl(1, {AxisMode::Stress, 0.0, pressure()});
     }
-    ctx.nextRecordStep = ctx.stageStartStep;
-    ctx.nextSnapshotStep = ctx.stageStartStep + ctx.strideOf(config.record.snapshotStrainInterval);
-    ctx.recordNow(); // eps1 = 0: N_vi and p0
+    recordFirst(ctx);
     const SeriesTable& t = ctx.series[std::size_t(ctx.currentSeries)];
     p0_ = t.rows.back()[std::size_t(t.column("p"))];
-    ctx.nextRecordStep = ctx.stageStartStep + ctx.strideOf(config.record.strainInterval);
-    ctx.checkpoint(ctx.checkpointLabel());
 }
 
-std::int64_t CyclicStage::stepsToNextEvent(const RunContext& ctx) const {
-    const std::int64_t now = ctx.sim->stepCount();
+std::int64_t CyclicStage::nextTestEvent(const RunContext& ctx) const {
     if (stressControl(ctx)) { // reversals are decided at records
-        return std::max<std::int64_t>(1, std::min(ctx.nextRecordStep, ctx.nextSnapshotStep) - now);
+        return std::numeric_limits<std::int64_t>::max();
     }
-    const std::int64_t n = now - ctx.stageStartStep;
+    const std::int64_t n = ctx.sim->stepCount() - ctx.stageStartStep;
     const CyclicStrainSchedule s = schedule(ctx);
     const std::int64_t reversal = ctx.stageStartStep + s.reversalStep(s.reversalsBy(n));
     const std::int64_t end = ctx.stageStartStep + s.reversalStep(2 * path(ctx).cycles);
-    return std::max<std::int64_t>(
-        1, std::min({ctx.nextRecordStep, ctx.nextSnapshotStep, reversal, end}) - now);
+    return std::min(reversal, end);
 }
 
 std::string CyclicStage::stopReason(const RunContext& ctx) const {
@@ -92,8 +83,7 @@ std::string CyclicStage::stopReason(const RunContext& ctx) const {
 bool CyclicStage::handleStressControlled(RunContext& ctx) {
     const std::int64_t now = ctx.sim->stepCount();
     if (now >= ctx.nextRecordStep) {
-        ctx.recordNow();
-        ctx.nextRecordStep = now + ctx.strideOf(ctx.config.record.strainInterval);
+        record(ctx);
         if (const std::string reason = stopReason(ctx); !reason.empty()) {
             ctx.warn("test_end", reason);
             return true;
@@ -114,10 +104,7 @@ bool CyclicStage::handleStressControlled(RunContext& ctx) {
             driveAxis(ctx, 0);
         }
     }
-    if (now >= ctx.nextSnapshotStep) {
-        ctx.checkpoint(ctx.checkpointLabel());
-        ctx.nextSnapshotStep = now + ctx.strideOf(ctx.config.record.snapshotStrainInterval);
-    }
+    checkpointWhenDue(ctx);
     return false;
 }
 
@@ -134,8 +121,7 @@ bool CyclicStage::handleEvents(RunContext& ctx) {
     const bool peak = s.isReversal(n);
     bool stopped = false;
     if (now >= ctx.nextRecordStep || end || peak) {
-        ctx.recordNow();
-        ctx.nextRecordStep = now + ctx.strideOf(ctx.config.record.strainInterval);
+        record(ctx);
         if (const std::string reason = stopReason(ctx); !reason.empty()) {
             ctx.warn("test_end", reason);
             stopped = true;
@@ -147,26 +133,20 @@ bool CyclicStage::handleEvents(RunContext& ctx) {
     if (peak) {
         driveAxis(ctx, n); // the strain turns back
     }
-    if (now >= ctx.nextSnapshotStep) {
-        ctx.checkpoint(ctx.checkpointLabel());
-        ctx.nextSnapshotStep = now + ctx.strideOf(ctx.config.record.snapshotStrainInterval);
-    }
+    checkpointWhenDue(ctx);
     return false;
 }
 
-void CyclicStage::save(RunnerState& state, const RunContext& ctx) const {
+void CyclicStage::saveTest(RunnerState& state, const RunContext& ctx) const {
     (void)ctx;
-    saveInitialVoids(state);
     state.cyclicDirection = direction_;
     state.cyclicReversals = reversals_;
-    state.peak.reset();
 }
 
-void CyclicStage::restore(const RunnerState& state, const RunContext& ctx,
-                          const SimulationState& resumed, std::optional<SimulationState> peak) {
+void CyclicStage::restoreTest(const RunnerState& state, const RunContext& ctx,
+                              const SimulationState& resumed, std::optional<SimulationState> kept) {
     (void)resumed;
-    (void)peak;
-    restoreInitialVoids(state);
+    (void)kept;
     direction_ = state.cyclicDirection;
     reversals_ = state.cyclicReversals;
     // p0: the test's first record, the first row of this stage's kind in its series.

@@ -26,15 +26,10 @@
 
 namespace grainlab {
 
-class CyclicStage final : public TestStage {
+class CyclicStage final : public LoadingTestStage {
 public:
-    using TestStage::TestStage;
-    void start(RunContext& ctx) override;
-    std::int64_t stepsToNextEvent(const RunContext& ctx) const override;
+    using LoadingTestStage::LoadingTestStage;
     bool handleEvents(RunContext& ctx) override;
-    void save(RunnerState& state, const RunContext& ctx) const override;
-    void restore(const RunnerState& state, const RunContext& ctx, const SimulationState& resumed,
-                 std::optional<SimulationState> runningPeak) override;
     /// Strain control: its steps to the last cycle's end (a stop by the criterion ends it
     /// sooner); stress control: a guess that settles.
     StageShare share(const ExperimentConfig& config) const override;
@@ -49,6 +44,13 @@ private:
     void driveAxis(RunContext& ctx, std::int64_t n) const;
     /// The stop criterion at the record just made: the notice's text, or "".
     std::string stopReason(const RunContext& ctx) const;
+    /// Both axes' controls for the start of the waveform; p0 from the first record.
+    void startTest(RunContext& ctx) override;
+    std::int64_t nextTestEvent(const RunContext& ctx) const override;
+    void saveTest(RunnerState& state, const RunContext& ctx) const override;
+    /// p0 again from the test's first record in its series.
+    void restoreTest(const RunnerState& state, const RunContext& ctx,
+                     const SimulationState& resumed, std::optional<SimulationState> kept) override;
 
     double p0_ = 0;              ///< p at the test's first record [Pa]
     int direction_ = 0;          ///< stress control: +1 compressing, -1 extending; 0 strain control

@@ -25,10 +25,6 @@ void EquilibrationStage::start(RunContext& ctx) {
     ctx.setStrainReference();
     ctx.thetaAtTestStart =
         std::make_shared<const std::vector<double>>(ctx.sim->stateRef().grains.theta);
-    // The first record at the first equilibrium check: events fall on whole steps counted
-    // from the stage's start, never where a caller's advance() happens to end.
-    ctx.nextRecordStep = ctx.stageStartStep + criterion(ctx.config).checkInterval;
-    ctx.nextSnapshotStep = ctx.sim->stepCount() + ctx.config.record.snapshotStepInterval;
     ctx.checkpoint(ctx.checkpointLabel());
 }
 

@@ -15,6 +15,8 @@ void EquilibriumStage::startWaiting(RunContext& ctx) {
     const AxisControl servo{AxisMode::Stress, 0.0, pressure()};
     ctx.sim->setAxisControl(0, servo);
     ctx.sim->setAxisControl(1, servo);
+    ctx.nextRecordStep = ctx.stageStartStep + criterion(ctx.config).checkInterval;
+    ctx.nextSnapshotStep = ctx.sim->stepCount() + ctx.config.record.snapshotStepInterval;
 }
 
 std::int64_t EquilibriumStage::stepsToNextEvent(const RunContext& ctx) const {

@@ -54,43 +54,31 @@ std::int64_t MonotonicTestStage::handOverStep(const RunContext& ctx) const {
                : -1;
 }
 
-void MonotonicTestStage::start(RunContext& ctx) {
+void MonotonicTestStage::startTest(RunContext& ctx) {
     const ExperimentConfig& config = ctx.config;
     ctx.probeStart.reset();
     ctx.probeStartKeptIn.clear();
-    ctx.stageStartStep = ctx.sim->stepCount();
-    ctx.setStrainReference();
-    forgetInitialVoids();
     peak_ = RunningPeak{};
     const double dt = config.parameters.timeStep;
     ctx.sim->setAxisControl(0, {AxisMode::Strain,
                                 direction(ctx) * config.shear.axialStrainPerStep / dt, 0.0,
                                 ctx.length1At0});
     ctx.sim->setAxisControl(1, lateralControl(ctx));
-    // Events fall on whole steps counted from the start of shear (each step adds the same
-    // engineering strain), so they do not depend on how advance() is chunked.
-    ctx.nextRecordStep = ctx.stageStartStep;
-    ctx.nextSnapshotStep = ctx.stageStartStep + ctx.strideOf(config.record.snapshotStrainInterval);
     if (const auto text = inertialNumberWarning(config, pressure())) {
         ctx.warn("inertial_number", *text);
     }
-    ctx.recordNow(); // eps1 = 0: N_vi
-    ctx.nextRecordStep = ctx.stageStartStep + ctx.strideOf(config.record.strainInterval);
+    recordFirst(ctx);
     trackPeak(ctx);
-    ctx.checkpoint(ctx.checkpointLabel());
 }
 
 std::int64_t MonotonicTestStage::endStep(const RunContext& ctx) const {
     return ctx.stageStartStep + ctx.strideOf(ctx.config.shear.targetAxialStrain);
 }
 
-std::int64_t MonotonicTestStage::stepsToNextEvent(const RunContext& ctx) const {
-    const std::int64_t now = ctx.sim->stepCount();
-    std::int64_t next = std::min({ctx.nextRecordStep, ctx.nextSnapshotStep, endStep(ctx)});
-    if (const std::int64_t probes = handOverStep(ctx); probes > now) {
-        next = std::min(next, probes);
-    }
-    return std::max<std::int64_t>(1, next - now);
+std::int64_t MonotonicTestStage::nextTestEvent(const RunContext& ctx) const {
+    const std::int64_t end = endStep(ctx);
+    const std::int64_t probes = handOverStep(ctx);
+    return probes > ctx.sim->stepCount() ? std::min(end, probes) : end;
 }
 
 bool MonotonicTestStage::handleEvents(RunContext& ctx) {
@@ -101,13 +89,11 @@ bool MonotonicTestStage::handleEvents(RunContext& ctx) {
         ctx.probeStartKeptIn.clear();
     }
     if (now >= ctx.nextRecordStep || end) {
-        ctx.recordNow();
-        ctx.nextRecordStep = now + ctx.strideOf(ctx.config.record.strainInterval);
+        record(ctx);
         trackPeak(ctx);
     }
-    if (now >= ctx.nextSnapshotStep && !end) {
-        ctx.checkpoint(ctx.checkpointLabel());
-        ctx.nextSnapshotStep = now + ctx.strideOf(ctx.config.record.snapshotStrainInterval);
+    if (!end) {
+        checkpointWhenDue(ctx);
     }
     return end;
 }
@@ -182,9 +168,7 @@ void MonotonicTestStage::addToCheckpoint(CheckpointData& data) {
     }
 }
 
-void MonotonicTestStage::save(RunnerState& state, const RunContext& ctx) const {
-    saveInitialVoids(state);
-    state.peak.reset();
+void MonotonicTestStage::saveTest(RunnerState& state, const RunContext& ctx) const {
     if (peak_.active) {
         RunningPeakRecord r = peak_.at;
         if (r.step == ctx.sim->stepCount()) {
@@ -196,10 +180,9 @@ void MonotonicTestStage::save(RunnerState& state, const RunContext& ctx) const {
 
 /// The running peak of a resumed run: from the runner state, with the state kept in the
 /// checkpoint it names (`kept`), or the resumed state itself when the peak was at its step.
-void MonotonicTestStage::restore(const RunnerState& state, const RunContext& ctx,
-                                 const SimulationState& resumed,
-                                 std::optional<SimulationState> kept) {
-    restoreInitialVoids(state);
+void MonotonicTestStage::restoreTest(const RunnerState& state, const RunContext& ctx,
+                                     const SimulationState& resumed,
+                                     std::optional<SimulationState> kept) {
     if (!state.peak) {
         return;
     }

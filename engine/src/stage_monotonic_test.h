@@ -22,24 +22,20 @@
 // the state at the first step whose eps1 reaches their start_strain, or, at its end, the state at
 // its peak of q/p.
 //
-// The model for a new test kind: its axis controls in start() (or changed in handleEvents()),
-// its stop criterion in handleEvents(), its records and tracked measures, its save()/restore().
+// The model for a new test kind: its axis controls in startTest() (or changed in handleEvents()),
+// its stop criterion in handleEvents(), its records and tracked measures, its
+// saveTest()/restoreTest().
 
 #include "stage.h"
 
 namespace grainlab {
 
-class MonotonicTestStage final : public TestStage {
+class MonotonicTestStage final : public LoadingTestStage {
 public:
-    using TestStage::TestStage;
-    void start(RunContext& ctx) override;
-    std::int64_t stepsToNextEvent(const RunContext& ctx) const override;
+    using LoadingTestStage::LoadingTestStage;
     bool handleEvents(RunContext& ctx) override;
     void finish(RunContext& ctx) override;
     void addToCheckpoint(CheckpointData& data) override;
-    void save(RunnerState& state, const RunContext& ctx) const override;
-    void restore(const RunnerState& state, const RunContext& ctx, const SimulationState& resumed,
-                 std::optional<SimulationState> runningPeak) override;
     /// Exactly its steps to the target strain (it moves linearly).
     StageShare share(const ExperimentConfig& config) const override;
 
@@ -66,6 +62,12 @@ private:
     /// The step at which the probes after it start (start "strain"); -1 for none.
     std::int64_t handOverStep(const RunContext& ctx) const;
     void peakCheckpoint(RunContext& ctx);
+
+    void startTest(RunContext& ctx) override;
+    std::int64_t nextTestEvent(const RunContext& ctx) const override;
+    void saveTest(RunnerState& state, const RunContext& ctx) const override;
+    void restoreTest(const RunnerState& state, const RunContext& ctx,
+                     const SimulationState& resumed, std::optional<SimulationState> kept) override;
 
     RunningPeak peak_;
 };

@@ -89,20 +89,17 @@ void ProbesStage::addToCheckpoint(CheckpointData& data) {
     }
 }
 
-void ProbesStage::save(RunnerState& state, const RunContext& ctx) const {
+void ProbesStage::saveTest(RunnerState& state, const RunContext& ctx) const {
     (void)ctx;
-    saveInitialVoids(state);
     state.probe = probe_;
     state.probeStartStep = probeStart_;
-    state.peak.reset();
     if (!keptIn_.empty()) {
         state.peak = RunningPeakRecord{0.0, base_.step, 0.0, keptIn_};
     }
 }
 
-void ProbesStage::restore(const RunnerState& state, const RunContext& ctx,
-                          const SimulationState& resumed, std::optional<SimulationState> kept) {
-    restoreInitialVoids(state);
+void ProbesStage::restoreTest(const RunnerState& state, const RunContext& ctx,
+                              const SimulationState& resumed, std::optional<SimulationState> kept) {
     probe_ = state.probe;
     probeStart_ = state.probeStartStep;
     if (!state.peak || !kept) {

@@ -40,13 +40,14 @@ public:
         keptIn_.clear();
     }
     void addToCheckpoint(CheckpointData& data) override;
-    void save(RunnerState& state, const RunContext& ctx) const override;
-    void restore(const RunnerState& state, const RunContext& ctx, const SimulationState& resumed,
-                 std::optional<SimulationState> kept) override;
     /// K probes and the zero probe, of their steps each.
     StageShare share(const ExperimentConfig& config) const override;
 
 private:
+    void saveTest(RunnerState& state, const RunContext& ctx) const override;
+    /// The start state is the one kept beside the checkpoint named (`kept`).
+    void restoreTest(const RunnerState& state, const RunContext& ctx,
+                     const SimulationState& resumed, std::optional<SimulationState> kept) override;
     /// Steps of one probe.
     static std::int64_t probeSteps(const ExperimentConfig& config, const LoadingPath& path);
     /// Makes the simulation again from the start state and drives probe `probe_`.
