@@ -1,6 +1,7 @@
 // See map_preset.h.
 #include "map_preset.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -31,6 +32,15 @@ std::vector<double> requiredNumbers(const JsonSection& axes, const std::string& 
         axes.missing(key, "a non-empty array of numbers " + range.text());
     }
     return *v;
+}
+
+void readSampleGrains(const JsonSection& scene, CompactedSampleMapSpec& spec) {
+    spec.grains = int(scene.integer("grains", 16, 20000, spec.grains));
+    spec.smallestWidth = scene.number("smallest_width", positive(), spec.smallestWidth);
+    spec.largestWidth = scene.number("largest_width", Range{spec.smallestWidth, 1e300, true, true},
+                                     std::max(spec.largestWidth, spec.smallestWidth));
+    spec.sizeClasses = int(scene.integer("size_classes", 1, 1000, spec.sizeClasses));
+    spec.seed = std::uint64_t(scene.integer("seed", 0, std::int64_t(1) << 53, 1));
 }
 
 void writeLimit(Json& j, const StepLimit& limit) {

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "grainlab/map_sample.h"
 #include "grainlab/stability_bisection.h"
 #include "grainlab/strict_json.h"
 
@@ -61,17 +62,8 @@ Spec parsePreset(const std::string& text, const std::string& file, const std::st
 std::vector<double> requiredNumbers(const JsonSection& axes, const std::string& key, Range range);
 
 /// Reads the grains of a compacted sample's scene (grains, smallest_width, largest_width,
-/// size_classes, seed) into `spec`, a StabilityMapSpec or a ServoMapSpec, whose values are the
-/// defaults.
-template <class Spec>
-void readSampleGrains(const JsonSection& scene, Spec& spec) {
-    spec.grains = int(scene.integer("grains", 16, 20000, spec.grains));
-    spec.smallestWidth = scene.number("smallest_width", positive(), spec.smallestWidth);
-    spec.largestWidth = scene.number("largest_width", Range{spec.smallestWidth, 1e300, true, true},
-                                     std::max(spec.largestWidth, spec.smallestWidth));
-    spec.sizeClasses = int(scene.integer("size_classes", 1, 1000, spec.sizeClasses));
-    spec.seed = std::uint64_t(scene.integer("seed", 0, std::int64_t(1) << 53, 1));
-}
+/// size_classes, seed) into `spec`, whose values are the defaults.
+void readSampleGrains(const JsonSection& scene, CompactedSampleMapSpec& spec);
 
 /// The bisected limit in a cell result's JSON: bracketed, limit, limit_low, limit_high and
 /// probes (the detector's fields are written beside it by the time-step map).

@@ -12,21 +12,20 @@
 #include <vector>
 
 #include "grainlab/experiment_limits.h"
+#include "grainlab/map_sample.h"
 #include "grainlab/servo_probe.h"
 #include "grainlab/stability_bisection.h"
 
 namespace grainlab {
 
-struct ServoMapSpec {
-    std::string name = "servo";
-    std::string sourcePath, sourceText;
-    // The sample (k_n = 1e8 N/m and density 2650 kg/m^3, the engine's defaults; compacted
-    // frictionless by the shared compacted scene, then equilibrated at `friction`).
-    int grains = 300;            ///< N [-]
-    double smallestWidth = 1e-3; ///< [m]
-    double largestWidth = 2e-3;  ///< [m]
-    int sizeClasses = 11;        ///< [-]
-    std::uint64_t seed = 1;
+/// The sample (k_n = 1e8 N/m and density 2650 kg/m^3, the engine's defaults; 300 grains by
+/// default) is compacted frictionless by the shared compacted scene, then equilibrated at
+/// `friction`.
+struct ServoMapSpec : CompactedSampleMapSpec {
+    ServoMapSpec() {
+        name = "servo";
+        grains = 300;
+    }
     double timeStep = 1e-6;       ///< [s]
     double friction = 0.5;        ///< mu in shear [-]
     double compactionRate = 20.0; ///< servo rate cap while compacting [1/s]

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "grainlab/map_sample.h"
 #include "grainlab/simulation_state.h"
 #include "grainlab/stability_bisection.h"
 
@@ -27,16 +28,13 @@ struct PackingState {
     double pressure = 0; ///< compaction and lateral pressure, Dense and Shear [Pa]
 };
 
-struct StabilityMapSpec {
-    std::string name = "stability";
-    std::string sourcePath, sourceText;
-    // The scene (k_n, density and the compaction rule are the engine's defaults, those of the
-    // shared compacted scene).
-    int grains = 150;            ///< N [-]
-    double smallestWidth = 1e-3; ///< [m]
-    double largestWidth = 2e-3;  ///< [m]
-    int sizeClasses = 11;        ///< widths evenly spaced between the two [-]
-    std::uint64_t seed = 1;
+/// The scene: 150 grains by default; k_n, density and the compaction rule are the engine's
+/// defaults, those of the shared compacted scene.
+struct StabilityMapSpec : CompactedSampleMapSpec {
+    StabilityMapSpec() {
+        name = "stability";
+        grains = 150;
+    }
     double friction = 0.5;         ///< mu while probing [-]
     double gasGap = 1.0;           ///< free space between grid neighbours, fraction of W_max [-]
     double gasSpeed = 1.0;         ///< rms grain speed of the gas [m/s]
