@@ -22,10 +22,11 @@
 //  - its share of the progress estimate (share(), progress_estimate.h).
 //
 // A new test kind (simple shear, ...) is a new StageKind value (grainlab/stage_kind.h) that
-// isTestStage() counts, a class deriving from TestStage (below) in its own stage_*.{h,cpp} like
-// MonotonicTestStage, CyclicStage and ProbesStage, a case in makeStage(), stageKindOf() and
-// experimentPlan() below, and its kind and keys in the reader of the experiment file's `test`
-// (loading_path.cpp). The runner itself does not change.
+// isTestStage() counts, a class deriving from TestStage, or from LoadingTestStage for a test
+// that loads along a path with records and checkpoints at strain intervals (below), in its own
+// stage_*.{h,cpp} like MonotonicTestStage, CyclicStage and ProbesStage, a case in makeStage(),
+// stageKindOf() and experimentPlan() below, and its kind and keys in the reader of the
+// experiment file's `test` (loading_path.cpp). The runner itself does not change.
 //
 // Called on the thread that drives the runner; one virtual call per stage event, none per step.
 
