@@ -2,6 +2,8 @@
 // layout"): every field of SimulationState, so that a run continues from it bit for bit.
 #include <algorithm>
 #include <string>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "grainlab/enum_names.h"
@@ -16,26 +18,13 @@ constexpr EnumName<DampingKind> kDampingNames[] = {{DampingKind::None, "none"},
                                                    {DampingKind::CundallLocal, "cundall_local"},
                                                    {DampingKind::GlobalViscous, "global_viscous"}};
 
-const char* dampingName(DampingKind kind) {
-    return enumName(kDampingNames, kind, "global_viscous");
-}
-
-DampingKind dampingFromName(const std::string& name) {
-    if (const auto kind = enumFromName(kDampingNames, name)) {
-        return *kind;
+/// The value `name` names in `names`; std::runtime_error "unknown <what> "<name>"" for none.
+template <class Enum, std::size_t N>
+Enum named(const EnumName<Enum> (&names)[N], const std::string& name, const char* what) {
+    if (const auto value = enumFromName(names, name)) {
+        return *value;
     }
-    throw std::runtime_error(fmt::format("unknown damping_kind \"{}\"", name));
-}
-
-const char* axisModeName(AxisMode mode) {
-    return enumName(kAxisModeNames, mode, "strain");
-}
-
-AxisMode axisFromName(const std::string& name) {
-    if (const auto mode = enumFromName(kAxisModeNames, name)) {
-        return *mode;
-    }
-    throw std::runtime_error(fmt::format("unknown axis mode \"{}\"", name));
+    throw std::runtime_error(fmt::format("unknown {} \"{}\"", what, name));
 }
 
 void writeParameters(H5::Group& g, const SimulationParameters& p) {
@@ -44,7 +33,8 @@ void writeParameters(H5::Group& g, const SimulationParameters& p) {
     writeAttribute(g, "tangential_stiffness", p.tangentialStiffness);
     writeAttribute(g, "friction", p.friction);
     writeAttribute(g, "density", p.density);
-    writeAttribute(g, "damping_kind", std::string(dampingName(p.damping.kind)));
+    writeAttribute(g, "damping_kind",
+                   std::string(enumName(kDampingNames, p.damping.kind, "global_viscous")));
     writeAttribute(g, "damping_coefficient", p.damping.coefficient);
     writeAttribute(g, "servo_gain", p.servo.gain);
     writeAttribute(g, "servo_integral_gain", p.servo.integralGain);
@@ -65,7 +55,7 @@ SimulationParameters readParameters(const H5::Group& g) {
     p.tangentialStiffness = readAttribute<double>(g, "tangential_stiffness");
     p.friction = readAttribute<double>(g, "friction");
     p.density = readAttribute<double>(g, "density");
-    p.damping.kind = dampingFromName(readStringAttribute(g, "damping_kind"));
+    p.damping.kind = named(kDampingNames, readStringAttribute(g, "damping_kind"), "damping_kind");
     p.damping.coefficient = readAttribute<double>(g, "damping_coefficient");
     p.servo.gain = readAttribute<double>(g, "servo_gain");
     p.servo.integralGain = readAttribute<double>(g, "servo_integral_gain");
@@ -140,6 +130,51 @@ std::vector<OvalShape> readShapes(const H5::Group& g) {
     return shapes;
 }
 
+/// A column of a structure-of-arrays group of the state: its name, the member holding it and
+/// its unit.
+template <class S, class T>
+struct Column {
+    using Value = T;
+    const char* name;
+    std::vector<T> S::*member;
+    const char* unit;
+};
+template <class S, class T>
+Column(const char*, std::vector<T> S::*, const char*) -> Column<S, T>;
+
+/// The columns of the groups grains and pairs, in the file's order.
+constexpr std::tuple kGrainColumns{
+    Column{"x1", &GrainArrays::x1, "m"},         Column{"x2", &GrainArrays::x2, "m"},
+    Column{"theta", &GrainArrays::theta, "rad"}, Column{"v1", &GrainArrays::v1, "m/s"},
+    Column{"v2", &GrainArrays::v2, "m/s"},       Column{"omega", &GrainArrays::omega, "rad/s"},
+    Column{"shape", &GrainArrays::shape, "-"}};
+constexpr std::tuple kPairColumns{Column{"first", &PairArrays::first, "-"},
+                                  Column{"second", &PairArrays::second, "-"},
+                                  Column{"shift1", &PairArrays::shift1, "-"},
+                                  Column{"shift2", &PairArrays::shift2, "-"},
+                                  Column{"tangential_force", &PairArrays::tangentialForce, "N"},
+                                  Column{"sliding", &PairArrays::sliding, "-"}};
+
+/// Writes `data` as the group `name` of `g`, one dataset per column.
+template <class S, class Columns>
+void writeColumns(H5::Group& g, const char* name, const S& data, const Columns& columns) {
+    H5::Group group = g.createGroup(name);
+    std::apply([&](const auto&... c) { (writeArray(group, c.name, data.*c.member, c.unit), ...); },
+               columns);
+}
+
+/// Reads the group written by writeColumns.
+template <class S, class Columns>
+void readColumns(const H5::Group& g, const char* name, S& data, const Columns& columns) {
+    const H5::Group group = g.openGroup(name);
+    std::apply(
+        [&](const auto&... c) {
+            ((data.*c.member = readArray<typename std::decay_t<decltype(c)>::Value>(group, c.name)),
+             ...);
+        },
+        columns);
+}
+
 } // namespace
 
 void writeState(H5::Group& g, const SimulationState& s) {
@@ -156,8 +191,8 @@ void writeState(H5::Group& g, const SimulationState& s) {
     writeArray(g, "servo_integral", s.servoIntegral, "1/s");
     {
         H5::Group axes = g.createGroup("axes");
-        const std::vector<std::string> modes = {axisModeName(s.axes[0].mode),
-                                                axisModeName(s.axes[1].mode)};
+        const std::vector<std::string> modes = {enumName(kAxisModeNames, s.axes[0].mode, "strain"),
+                                                enumName(kAxisModeNames, s.axes[1].mode, "strain")};
         writeStringListAttribute(axes, "mode", modes);
         writeArray(axes, "strain_rate",
                    std::array<double, 2>{s.axes[0].strainRate, s.axes[1].strainRate}, "1/s");
@@ -186,25 +221,8 @@ void writeState(H5::Group& g, const SimulationState& s) {
         H5::Group shapes = g.createGroup("shapes");
         writeShapes(shapes, s.shapes);
     }
-    {
-        H5::Group grains = g.createGroup("grains");
-        writeArray(grains, "x1", s.grains.x1, "m");
-        writeArray(grains, "x2", s.grains.x2, "m");
-        writeArray(grains, "theta", s.grains.theta, "rad");
-        writeArray(grains, "v1", s.grains.v1, "m/s");
-        writeArray(grains, "v2", s.grains.v2, "m/s");
-        writeArray(grains, "omega", s.grains.omega, "rad/s");
-        writeArray(grains, "shape", s.grains.shape, "-");
-    }
-    {
-        H5::Group pairs = g.createGroup("pairs");
-        writeArray(pairs, "first", s.pairs.first, "-");
-        writeArray(pairs, "second", s.pairs.second, "-");
-        writeArray(pairs, "shift1", s.pairs.shift1, "-");
-        writeArray(pairs, "shift2", s.pairs.shift2, "-");
-        writeArray(pairs, "tangential_force", s.pairs.tangentialForce, "N");
-        writeArray(pairs, "sliding", s.pairs.sliding, "-");
-    }
+    writeColumns(g, "grains", s.grains, kGrainColumns);
+    writeColumns(g, "pairs", s.pairs, kPairColumns);
     {
         H5::Group neighbours = g.createGroup("neighbours");
         writeArray(neighbours, "reference_x1", s.reference1, "m");
@@ -244,7 +262,7 @@ SimulationState readState(const H5::Group& g) {
         const auto slopes = optional("path_slope");
         const auto origins = optional("path_origin");
         for (int a = 0; a < 2; ++a) {
-            s.axes[a] = {axisFromName(modes[a]),
+            s.axes[a] = {named(kAxisModeNames, modes[a], "axis mode"),
                          rates[a],
                          targets[a],
                          lengths[a],
@@ -254,25 +272,8 @@ SimulationState readState(const H5::Group& g) {
         }
     }
     s.shapes = readShapes(g.openGroup("shapes"));
-    {
-        const H5::Group grains = g.openGroup("grains");
-        s.grains.x1 = readArray<double>(grains, "x1");
-        s.grains.x2 = readArray<double>(grains, "x2");
-        s.grains.theta = readArray<double>(grains, "theta");
-        s.grains.v1 = readArray<double>(grains, "v1");
-        s.grains.v2 = readArray<double>(grains, "v2");
-        s.grains.omega = readArray<double>(grains, "omega");
-        s.grains.shape = readArray<std::int32_t>(grains, "shape");
-    }
-    {
-        const H5::Group pairs = g.openGroup("pairs");
-        s.pairs.first = readArray<std::int32_t>(pairs, "first");
-        s.pairs.second = readArray<std::int32_t>(pairs, "second");
-        s.pairs.shift1 = readArray<std::int32_t>(pairs, "shift1");
-        s.pairs.shift2 = readArray<std::int32_t>(pairs, "shift2");
-        s.pairs.tangentialForce = readArray<double>(pairs, "tangential_force");
-        s.pairs.sliding = readArray<std::uint8_t>(pairs, "sliding");
-    }
+    readColumns(g, "grains", s.grains, kGrainColumns);
+    readColumns(g, "pairs", s.pairs, kPairColumns);
     {
         const H5::Group neighbours = g.openGroup("neighbours");
         s.reference1 = readArray<double>(neighbours, "reference_x1");
