@@ -275,7 +275,8 @@ MeasureSet computeMeasures(const ContactNetwork& network, const MeasureOptions& 
     m.voidRatio = voidRatio(network);
     m.meanDiameter = meanEquivalentDiameter(network);
     if (options.voidCells) {
-        m.voidCells = computeVoidCells(network, m.loadBearing.contactInGraph);
+        m.voidCells =
+            computeVoidCells(network, m.loadBearing.contactInGraph, options.voidCellShapes);
     }
     return m;
 }

@@ -95,7 +95,10 @@ RecordInputs RunContext::recordInputs(const MeasureSet& measures, bool asLastRec
 void RunContext::recordNow() {
     const AddWallTime timed(times.records);
     const ContactNetwork network = sim->contactNetwork();
-    const MeasureSet measures = computeMeasures(network);
+    // A record keeps the void cells' count and valence, not their polygons.
+    MeasureOptions options;
+    options.voidCellShapes = false;
+    const MeasureSet measures = computeMeasures(network, options);
     stage->noteRecord(measures);
     const RecordInputs in = recordInputs(measures);
     SeriesTable& t = series[currentSeries];

@@ -114,9 +114,10 @@ HalfEdges buildHalfEdges(const ContactNetwork& network, const std::vector<std::u
 
 /// Area, centroid, second moment and principal axes of a closed face from its polyline
 /// vertices (relative to the walk's first centre); shifts the vertices to the centroid.
-/// Returns false, leaving the rest untouched, when the area is not above minimumArea.
+/// Returns false, leaving the rest untouched, when the area is not above minimumArea; without
+/// `shapes`, stops after the area.
 bool fillShape(VoidCell& cell, double origin1, double origin2, const CellMatrix& h,
-               double minimumArea) {
+               double minimumArea, bool shapes) {
     auto& v1 = cell.vertices1;
     auto& v2 = cell.vertices2;
     const std::size_t n = v1.size();
@@ -131,6 +132,9 @@ bool fillShape(VoidCell& cell, double origin1, double origin2, const CellMatrix&
     cell.area = 0.5 * twiceArea;
     if (!(cell.area > minimumArea)) {
         return false;
+    }
+    if (!shapes) {
+        return true;
     }
     c1 /= 3.0 * twiceArea;
     c2 /= 3.0 * twiceArea;
@@ -172,7 +176,7 @@ bool fillShape(VoidCell& cell, double origin1, double origin2, const CellMatrix&
 } // namespace
 
 VoidCellSet computeVoidCells(const ContactNetwork& network,
-                             const std::vector<std::uint8_t>& contactInGraph) {
+                             const std::vector<std::uint8_t>& contactInGraph, bool shapes) {
     const std::int32_t n = network.grainCount;
     if (contactInGraph.size() != network.contacts.size()) {
         throw std::invalid_argument(fmt::format("void cells: mask of {} entries for {} contacts",
@@ -201,14 +205,24 @@ VoidCellSet computeVoidCells(const ContactNetwork& network,
     }
 
     // Faces of a cellular embedding on the torus: F = E - V (Euler), the cells at most that.
-    set.cells.reserve(std::size_t(std::max(0, set.graphContacts - set.graphGrains)));
+    if (shapes) {
+        set.cells.reserve(std::size_t(std::max(0, set.graphContacts - set.graphGrains)));
+    }
+    // A summary walks every face through this one cell, its vectors reused, instead of keeping
+    // three heap blocks per cell.
+    VoidCell scratch;
+    std::int64_t totalSides = 0;
     std::vector<std::uint8_t> visited(halfEdgeCount, 0);
     for (std::int32_t start = 0; start < halfEdgeCount; ++start) {
         if (visited[start]) {
             continue;
         }
         ++set.faceCount;
-        VoidCell cell;
+        VoidCell fresh;
+        VoidCell& cell = shapes ? fresh : scratch;
+        cell.grains.clear();
+        cell.vertices1.clear();
+        cell.vertices2.clear();
         std::size_t sides = 0;
         for (std::int32_t h = start; sides == 0 || h != start; h = he.next(h)) {
             ++sides;
@@ -238,26 +252,25 @@ VoidCellSet computeVoidCells(const ContactNetwork& network,
             continue;
         }
         const std::int32_t o = cell.grains.front();
-        if (!fillShape(cell, network.x1[o], network.x2[o], network.cell, 1e-12 * scale)) {
+        if (!fillShape(cell, network.x1[o], network.x2[o], network.cell, 1e-12 * scale, shapes)) {
             ++set.openFaceCount;
             continue;
         }
         cell.valence = static_cast<std::int32_t>(cell.grains.size());
         set.totalArea += cell.area;
-        set.cells.push_back(std::move(cell));
+        ++set.voidCount;
+        totalSides += cell.valence;
+        if (static_cast<std::size_t>(cell.valence) >= set.valenceHistogram.size()) {
+            set.valenceHistogram.resize(cell.valence + 1, 0);
+        }
+        ++set.valenceHistogram[cell.valence];
+        if (shapes) {
+            set.cells.push_back(std::move(cell));
+        }
     }
 
-    set.voidCount = static_cast<std::int32_t>(set.cells.size());
-    std::int64_t sides = 0;
-    for (const VoidCell& c : set.cells) {
-        sides += c.valence;
-        if (static_cast<std::size_t>(c.valence) >= set.valenceHistogram.size()) {
-            set.valenceHistogram.resize(c.valence + 1, 0);
-        }
-        ++set.valenceHistogram[c.valence];
-    }
     if (set.voidCount > 0) {
-        set.meanValence = static_cast<double>(sides) / set.voidCount;
+        set.meanValence = static_cast<double>(totalSides) / set.voidCount;
     }
     set.eulerCharacteristic = set.graphGrains - set.graphContacts + set.faceCount;
     if (set.graphContacts == 0) {

@@ -139,6 +139,33 @@ TEST(VoidCells, RotatedRectangularLatticeGivesElongatedQuadrilaterals) {
 }
 
 /// A ring of n touching disks of diameter d around (0.5 L, 0.5 L) in an L x L cell.
+/// The summary a record takes (no shapes) is the full set's, bit for bit, with no cells kept.
+void expectSummaryOfFullSet(const ContactNetwork& net) {
+    const LoadBearingGraph graph = loadBearingGraph(net);
+    const VoidCellSet full = computeVoidCells(net, graph.contactInGraph);
+    const VoidCellSet summary = computeVoidCells(net, graph.contactInGraph, false);
+    EXPECT_EQ(full.voidCount, static_cast<std::int32_t>(full.cells.size()));
+    EXPECT_TRUE(summary.cells.empty());
+    EXPECT_EQ(summary.voidCount, full.voidCount);
+    EXPECT_EQ(summary.meanValence, full.meanValence);
+    EXPECT_EQ(summary.valenceHistogram, full.valenceHistogram);
+    EXPECT_EQ(summary.totalArea, full.totalArea);
+    EXPECT_EQ(summary.graphGrains, full.graphGrains);
+    EXPECT_EQ(summary.graphContacts, full.graphContacts);
+    EXPECT_EQ(summary.faceCount, full.faceCount);
+    EXPECT_EQ(summary.eulerCharacteristic, full.eulerCharacteristic);
+    EXPECT_EQ(summary.openFaceCount, full.openFaceCount);
+    EXPECT_EQ(summary.cellular, full.cellular);
+    EXPECT_EQ(summary.problem, full.problem);
+    // The same through the measures, as a record asks for them.
+    MeasureOptions options;
+    options.voidCellShapes = false;
+    const MeasureSet m = computeMeasures(net, options);
+    EXPECT_TRUE(m.voidCells.cells.empty());
+    EXPECT_EQ(m.voidCells.voidCount, full.voidCount);
+    EXPECT_EQ(m.voidCells.meanValence, full.meanValence);
+}
+
 ContactNetwork ringNetwork(int n, double d, double L, int extra = 0) {
     ContactNetwork net = emptyNetwork(n + extra, {L, 0.0, 0.0, L});
     const double radius = 0.5 * d / std::sin(kPi / n);
@@ -175,6 +202,7 @@ TEST(VoidCells, RingEnclosesOneVoidAndReportsTheOutsideAsOpen) {
     EXPECT_EQ(set.faceCount, 2);
     EXPECT_EQ(set.openFaceCount, 1);
     EXPECT_EQ(set.eulerCharacteristic, 2);
+    expectSummaryOfFullSet(net);
 }
 
 TEST(VoidCells, DanglingChainIsPrunedAndCreatesNoVoid) {
@@ -272,6 +300,7 @@ using test::compactedPacking;
 
 /// The two invariants of docs/measures.md and the consistency of every cell with the network.
 void checkInvariants(const ContactNetwork& net) {
+    expectSummaryOfFullSet(net);
     const LoadBearingGraph graph = loadBearingGraph(net);
     const VoidCellSet set = computeVoidCells(net);
     ASSERT_TRUE(set.cellular) << set.problem;
@@ -329,6 +358,7 @@ TEST(VoidCells, LoosePackingIsReportedGracefully) {
         EXPECT_GT(cell.area, 0.0);
     }
     EXPECT_LT(set.totalArea, net.cellArea());
+    expectSummaryOfFullSet(net);
     // The measures built on it stay finite and consistent.
     const MeasureSet m = computeMeasures(net);
     EXPECT_EQ(m.voidCells.voidCount, set.voidCount);

@@ -30,6 +30,10 @@ enum class StrongForceThreshold {
 struct MeasureOptions {
     StrongForceThreshold strongThreshold = StrongForceThreshold::RmsForce;
     bool voidCells = true; ///< trace the void cells (Nv, valence); off leaves them empty
+    /// With voidCells: keep each cell (its grains, polygon and shape) too. Off keeps only the
+    /// summary (counts, valences, total area, the Euler check), the same numbers bit for bit,
+    /// with `cells` empty: what a time-series record needs, without a heap block per cell.
+    bool voidCellShapes = true;
 };
 
 /// Grain and contact counts and the two coordination numbers that need no graph pruning.

@@ -44,8 +44,8 @@ struct VoidCell {
 
 /// All void cells of one contact network, with the summary the time series records.
 struct VoidCellSet {
-    std::vector<VoidCell> cells; ///< closed faces only (see openFaceCount)
-    std::int32_t voidCount = 0;  ///< N_v = cells.size() [-]
+    std::vector<VoidCell> cells; ///< closed faces only (see openFaceCount); empty for a summary
+    std::int32_t voidCount = 0;  ///< N_v, the closed faces (= cells.size() unless a summary) [-]
     double meanValence = 0;      ///< mean number of sides over the cells (0 if none) [-]
     /// valenceHistogram[k] = number of cells with k sides (size = largest valence + 1).
     std::vector<std::int32_t> valenceHistogram;
@@ -70,8 +70,10 @@ struct VoidCellSet {
 /// contact, non-zero = edge of the graph). Never throws on geometry: non-planar or
 /// non-spanning graphs are reported through `cellular`, `openFaceCount` and `problem`. Throws
 /// std::invalid_argument when the mask size or a grain index does not match the network.
+/// With `shapes` false the set keeps only its summary (`cells` stays empty; every other field,
+/// voidCount included, is what the full set has, bit for bit).
 VoidCellSet computeVoidCells(const ContactNetwork& network,
-                             const std::vector<std::uint8_t>& contactInGraph);
+                             const std::vector<std::uint8_t>& contactInGraph, bool shapes = true);
 
 /// Void cells of the load-bearing graph of `network` (see loadBearingGraph in measures.h).
 VoidCellSet computeVoidCells(const ContactNetwork& network);
