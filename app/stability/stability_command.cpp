@@ -1,8 +1,6 @@
 #include "stability/stability_command.h"
 
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <filesystem>
 #include <stdexcept>
 
@@ -10,8 +8,7 @@
 
 #include "common/atomic_file.h"
 #include "common/job_list.h"
-#include "common/process_pool.h"
-#include "common/progress_bar.h"
+#include "common/pool_command.h"
 #include "common/resources.h"
 #include "grainlab/strict_json.h"
 #include "stability/map_point_command.h"
@@ -22,41 +19,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::atomic<bool> stopRequested{false};
-
-extern "C" void onStabilityInterrupt(int) {
-    stopRequested.store(true);
-}
-
 /// Creates the map folder, or checks that an existing one holds this very preset.
 void prepareFolder(const fs::path& dir, const std::string& sourceText,
                    const std::string& sourcePath) {
-    const fs::path preset = dir / "stability.json";
-    if (fs::exists(dir)) {
-        if (!fs::is_directory(dir)) {
-            throw std::runtime_error(
-                fmt::format("--out {}: exists and is not a folder", dir.string()));
-        }
-        if (!fs::exists(preset)) {
-            if (!fs::is_empty(dir)) {
-                throw std::runtime_error(
-                    fmt::format("--out {}: the folder is not empty and holds no stability map (no "
-                                "stability.json); give a new or empty folder",
-                                dir.string()));
-            }
-        } else if (readWholeFile(preset.string()) != sourceText) {
-            throw std::runtime_error(fmt::format(
-                "--out {}: the folder holds a different map (its stability.json differs from "
-                "{}); give another folder, or continue that map with its own stability.json",
-                dir.string(), sourcePath));
-        }
-    }
-    for (const char* sub : {"cells", "logs"}) {
-        fs::create_directories(dir / sub);
-    }
-    if (!fs::exists(preset)) {
-        writeFileAtomically(preset.string(), sourceText);
-    }
+    preparePoolFolder({dir, "stability.json", "stability map", "map", {"cells", "logs"}},
+                      sourceText, sourcePath);
 }
 
 std::vector<std::string> cellArguments(const std::string& grainlab, const fs::path& dir,
@@ -265,13 +232,9 @@ int runStabilityCommand(const StabilityOptions& options) {
                             slurm ? slurmArrayScript("stability-" + map.name, comment,
                                                      (dir / "logs").string(), commands, 1)
                                   : commandJobList(commands));
-        fmt::print("grainlab stability: {} cells written as {}\n", cells.size(), file.string());
-        if (slurm) {
-            fmt::print("Submit with: sbatch {}\n", file.string());
-        } else {
-            fmt::print("Run with: parallel --jobs N < {}\n", file.string());
-        }
-        fmt::print("Then collect with: {} stability collect {}\n", grainlab, dir.string());
+        printEmittedJobs(
+            "grainlab stability", cells.size(), "cells", file.string(), slurm,
+            fmt::format("Then collect with: {} stability collect {}", grainlab, dir.string()));
         return 0;
     }
     if (!options.emit.empty()) {
@@ -279,7 +242,7 @@ int runStabilityCommand(const StabilityOptions& options) {
     }
 
     std::vector<PoolJob> jobs;
-    std::vector<std::size_t> jobCell;
+    std::vector<std::string> jobNames;
     std::size_t doneBefore = 0;
     for (std::size_t i = 0; i < cells.size(); ++i) {
         if (fs::exists(dir / "cells" / (cells[i] + ".json"))) {
@@ -288,56 +251,21 @@ int runStabilityCommand(const StabilityOptions& options) {
         }
         jobs.push_back({cellArguments(grainlab, dir, cells[i]),
                         (dir / "logs" / (cells[i] + ".log")).string(), 1});
-        jobCell.push_back(i);
+        jobNames.push_back(cells[i]);
     }
     const int slots = options.jobs > 0 ? options.jobs : processorCount();
     if (!options.quiet) {
         fmt::print("grainlab stability {}: {} cells, {} done, at most {} at a time; folder {}\n",
                    map.name, cells.size(), doneBefore, slots, dir.string());
     }
-    stopRequested.store(false);
-    auto previous = std::signal(SIGINT, onStabilityInterrupt);
-    auto previousTerm = std::signal(SIGTERM, onStabilityInterrupt);
-    ProgressBar bar(fmt::format("stability {} ({} cells)", map.name, cells.size()));
-    std::vector<std::string> failed;
-    const auto total = double(cells.size());
-    ProcessPool pool(slots, options.jobs > 0 ? 1 << 20 : processorCount());
-    pool.run(
-        jobs,
-        [&](std::size_t job, const PoolResult& r) {
-            if (!r.succeeded() && !stopRequested.load()) {
-                failed.push_back(fmt::format(
-                    "{} (exit {}{}; log {})", cells[jobCell[job]], r.exitStatus,
-                    r.signal ? fmt::format(", signal {}", r.signal) : "", jobs[job].logPath));
-            }
-        },
-        [&](std::size_t ended, std::size_t running) {
-            if (!options.quiet) {
-                bar.update(double(doneBefore + ended) / total,
-                           fmt::format("{} done, {} running", doneBefore + ended, running));
-            }
-        },
-        &stopRequested);
-    if (!options.quiet) {
-        bar.finish();
-    }
-    std::signal(SIGINT, previous);
-    std::signal(SIGTERM, previousTerm);
+    const PoolOutcome outcome =
+        runPoolJobs(jobs, jobNames, options.jobs, doneBefore, cells.size(),
+                    fmt::format("stability {} ({} cells)", map.name, cells.size()), options.quiet);
     map.collect(dir, options.quiet);
-    if (stopRequested.load()) {
-        fmt::print(stderr,
-                   "grainlab stability: interrupted; the cells done are kept. Continue with the "
-                   "same command.\n");
-        return 130;
-    }
-    if (!failed.empty()) {
-        fmt::print(stderr, "grainlab stability: {} cell(s) failed:\n", failed.size());
-        for (const std::string& f : failed) {
-            fmt::print(stderr, "  {}\n", f);
-        }
-        return 1;
-    }
-    return 0;
+    return poolExitStatus(outcome, "grainlab stability",
+                          "grainlab stability: interrupted; the cells done are kept. Continue "
+                          "with the same command.",
+                          "cell(s)");
 }
 
 int collectStabilityCommand(const std::string& folder, bool quiet,

@@ -1,9 +1,6 @@
 #include "study/study_command.h"
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <csignal>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -11,8 +8,7 @@
 
 #include "common/atomic_file.h"
 #include "common/job_list.h"
-#include "common/process_pool.h"
-#include "common/progress_bar.h"
+#include "common/pool_command.h"
 #include "common/run_cost.h"
 #include "grainlab/experiment_file.h"
 #include "grainlab/experiment_runner.h"
@@ -25,12 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::atomic<bool> stopRequested{false};
-
-extern "C" void onStudyInterrupt(int) {
-    stopRequested.store(true);
-}
-
 /// The engine threads run `run` uses.
 int threadsOf(const StudyRun& run) {
     return engineThreads(parseExperimentText(run.experimentText, run.id));
@@ -39,32 +29,8 @@ int threadsOf(const StudyRun& run) {
 /// Creates the study folder, or checks that an existing one holds this very study. Writes
 /// study.json and each run's experiment file (unless there already, identical).
 void prepareFolder(const fs::path& dir, const StudySpec& spec, const StudyPlan& plan) {
-    const fs::path studyJson = dir / "study.json";
-    if (fs::exists(dir)) {
-        if (!fs::is_directory(dir)) {
-            throw std::runtime_error(
-                fmt::format("--out {}: exists and is not a folder", dir.string()));
-        }
-        if (!fs::exists(studyJson)) {
-            if (!fs::is_empty(dir)) {
-                throw std::runtime_error(fmt::format(
-                    "--out {}: the folder is not empty and holds no study (no study.json); "
-                    "give a new or empty folder",
-                    dir.string()));
-            }
-        } else if (readWholeFile(studyJson.string()) != spec.sourceText) {
-            throw std::runtime_error(fmt::format(
-                "--out {}: the folder holds a different study (its study.json differs from {}); "
-                "give another folder, or continue that study with its own study.json",
-                dir.string(), spec.sourcePath));
-        }
-    }
-    for (const char* sub : {"experiments", "runs", "logs"}) {
-        fs::create_directories(dir / sub);
-    }
-    if (!fs::exists(studyJson)) {
-        writeFileAtomically(studyJson.string(), spec.sourceText);
-    }
+    preparePoolFolder({dir, "study.json", "study", "study", {"experiments", "runs", "logs"}},
+                      spec.sourceText, spec.sourcePath);
     for (const StudyRun& r : plan.runs) {
         const fs::path file = dir / "experiments" / (r.id + ".json");
         if (fs::exists(file)) {
@@ -141,13 +107,9 @@ int runStudyCommand(const StudyOptions& options) {
         const fs::path file = dir / (slurm ? "study.slurm" : "jobs.txt");
         writeFileAtomically(file.string(), slurm ? slurmScript(layout, spec.name, ids, threads)
                                                  : parallelJobList(layout, ids));
-        fmt::print("grainlab study: {} runs written as {}\n", ids.size(), file.string());
-        if (slurm) {
-            fmt::print("Submit with: sbatch {}\n", file.string());
-        } else {
-            fmt::print("Run with: parallel --jobs N < {}\n", file.string());
-        }
-        fmt::print("Then summarise with: {} study collect {}\n", layout.grainlab, dir.string());
+        printEmittedJobs(
+            "grainlab study", ids.size(), "runs", file.string(), slurm,
+            fmt::format("Then summarise with: {} study collect {}", layout.grainlab, dir.string()));
         return 0;
     }
     if (!options.emit.empty()) {
@@ -156,7 +118,7 @@ int runStudyCommand(const StudyOptions& options) {
 
     // The runs still to do: a run folder with a run file continues, a finished run is skipped.
     std::vector<PoolJob> jobs;
-    std::vector<std::size_t> jobRun;
+    std::vector<std::string> jobNames;
     std::size_t finishedBefore = 0;
     for (std::size_t i = 0; i < plan.runs.size(); ++i) {
         const std::string folder = layout.runFolder(plan.runs[i].id);
@@ -167,7 +129,7 @@ int runStudyCommand(const StudyOptions& options) {
         const bool resume = fs::exists(fs::path(folder) / "run.h5");
         jobs.push_back({runArguments(layout, plan.runs[i].id, resume),
                         layout.logFile(plan.runs[i].id), threadsOf(plan.runs[i])});
-        jobRun.push_back(i);
+        jobNames.push_back(plan.runs[i].id);
     }
     const int slots = options.jobs > 0 ? options.jobs : processorCount();
     if (!options.quiet) {
@@ -177,49 +139,16 @@ int runStudyCommand(const StudyOptions& options) {
                    finishedBefore, slots, dir.string());
     }
 
-    stopRequested.store(false);
-    auto previous = std::signal(SIGINT, onStudyInterrupt);
-    auto previousTerm = std::signal(SIGTERM, onStudyInterrupt);
-    ProgressBar bar(fmt::format("study {} ({} runs)", spec.name, plan.runs.size()));
-    std::vector<std::string> failed;
-    const auto total = double(plan.runs.size());
-    const auto draw = [&](std::size_t ended, std::size_t running) {
-        if (!options.quiet) {
-            bar.update(double(finishedBefore + ended) / total,
-                       fmt::format("{} done, {} running", finishedBefore + ended, running));
-        }
-    };
-    ProcessPool pool(slots, options.jobs > 0 ? 1 << 20 : processorCount());
-    const auto results = pool.run(
-        jobs,
-        [&](std::size_t job, const PoolResult& r) {
-            if (!r.succeeded() && !stopRequested.load()) {
-                failed.push_back(fmt::format(
-                    "{} (exit {}{}; log {})", plan.runs[jobRun[job]].id, r.exitStatus,
-                    r.signal ? fmt::format(", signal {}", r.signal) : "", jobs[job].logPath));
-            }
-        },
-        draw, &stopRequested);
-    bar.finish();
-    std::signal(SIGINT, previous);
-    std::signal(SIGTERM, previousTerm);
-
+    const PoolOutcome outcome =
+        runPoolJobs(jobs, jobNames, options.jobs, finishedBefore, plan.runs.size(),
+                    fmt::format("study {} ({} runs)", spec.name, plan.runs.size()), options.quiet);
     summarise(dir, spec, plan, options.quiet, options.figures);
-    if (stopRequested.load()) {
-        fmt::print(stderr,
-                   "grainlab study: interrupted; the runs wrote checkpoints. Continue with the "
-                   "same command: grainlab study {} --out {}\n",
-                   options.studyFile, dir.string());
-        return 130;
-    }
-    if (!failed.empty()) {
-        fmt::print(stderr, "grainlab study: {} run(s) failed:\n", failed.size());
-        for (const std::string& f : failed) {
-            fmt::print(stderr, "  {}\n", f);
-        }
-        return 1;
-    }
-    return 0;
+    return poolExitStatus(
+        outcome, "grainlab study",
+        fmt::format("grainlab study: interrupted; the runs wrote checkpoints. Continue with the "
+                    "same command: grainlab study {} --out {}",
+                    options.studyFile, dir.string()),
+        "run(s)");
 }
 
 int collectStudyCommand(const std::string& folder, bool quiet, const StudyFigureWriter& figures) {
