@@ -15,15 +15,20 @@
 namespace grainlab {
 
 StageKind stageKindOf(const LoadingPath& path) {
-    using Test = LoadingPath::Kind;
-    static constexpr std::pair<Test, StageKind> kStageOfTest[] = {
-        {Test::Drained, StageKind::Shear},       {Test::ConstantVolume, StageKind::ConstantVolume},
-        {Test::ConstantP, StageKind::ConstantP}, {Test::StressPath, StageKind::StressPath},
-        {Test::Cyclic, StageKind::Cyclic},       {Test::Probes, StageKind::Probes}};
-    for (const auto& [test, stage] : kStageOfTest) {
-        if (test == path.kind) {
-            return stage;
-        }
+    // A switch, so that the compiler names a test kind left out.
+    switch (path.kind) {
+    case LoadingPath::Kind::Drained:
+        return StageKind::Shear;
+    case LoadingPath::Kind::ConstantVolume:
+        return StageKind::ConstantVolume;
+    case LoadingPath::Kind::ConstantP:
+        return StageKind::ConstantP;
+    case LoadingPath::Kind::StressPath:
+        return StageKind::StressPath;
+    case LoadingPath::Kind::Cyclic:
+        return StageKind::Cyclic;
+    case LoadingPath::Kind::Probes:
+        return StageKind::Probes;
     }
     throw std::invalid_argument(
         fmt::format("experiment: tests of kind {} are not available", loadingKindName(path.kind)));

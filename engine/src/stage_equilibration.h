@@ -18,8 +18,15 @@ public:
     using EquilibriumStage::EquilibriumStage;
     void start(RunContext& ctx) override;
     void finish(RunContext& ctx) override { ctx.recordNow(); }
+    /// The test follows at once, with no checkpoint between.
+    bool checkpointAtEnd() const override { return false; }
     /// Two calm windows (calm_checks * check_interval steps each).
     StageShare share(const ExperimentConfig& config) const override;
+
+protected:
+    const EquilibriumCriterion& criterion(const ExperimentConfig& config) const override {
+        return config.shear.equilibration;
+    }
 };
 
 } // namespace grainlab

@@ -14,9 +14,6 @@ namespace grainlab {
 class EquilibriumStage : public Stage {
 public:
     using Stage::Stage;
-    /// A compaction ends with its sample's checkpoint; the test follows a re-equilibration at
-    /// once.
-    bool checkpointAtEnd() const override { return kind() == StageKind::Compaction; }
     std::int64_t stepsToNextEvent(const RunContext& ctx) const override;
     bool handleEvents(RunContext& ctx) override;
     void save(RunnerState& state, const RunContext& ctx) const override;
@@ -24,11 +21,8 @@ public:
                  std::optional<SimulationState> runningPeak) override;
 
 protected:
-    /// The compaction's criterion, or the re-equilibration's.
-    const EquilibriumCriterion& criterion(const ExperimentConfig& config) const {
-        return kind() == StageKind::Compaction ? config.compaction.criterion
-                                               : config.shear.equilibration;
-    }
+    /// The stage's equilibrium criterion: the compaction's, or the re-equilibration's.
+    virtual const EquilibriumCriterion& criterion(const ExperimentConfig& config) const = 0;
     /// Resets the checks and sets the servo and the record schedule, from the current step: the
     /// first record at the first equilibrium check (events fall on whole steps counted from the
     /// stage's start, never where a caller's advance() happens to end).

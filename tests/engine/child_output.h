@@ -7,6 +7,8 @@
 
 #include <string>
 
+#include <gtest/gtest.h>
+
 namespace grainlab::test {
 
 struct ChildOutput {
@@ -22,6 +24,7 @@ ChildOutput childOutput(Child child) {
     ChildOutput r;
     int fds[2];
     if (::pipe(fds) != 0) {
+        ADD_FAILURE() << "pipe() failed: no child started";
         return r;
     }
     const pid_t pid = ::fork();
@@ -33,6 +36,7 @@ ChildOutput childOutput(Child child) {
     ::close(fds[1]);
     if (pid < 0) {
         ::close(fds[0]);
+        ADD_FAILURE() << "fork() failed: no child started";
         return r;
     }
     char buffer[512];

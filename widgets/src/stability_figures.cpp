@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include <QObject>
 #include <QPainter>
@@ -82,6 +83,8 @@ constexpr AxisNames kAxisNames[] = {
     {"packing", QT_TRANSLATE_NOOP("QObject", "packing state"),
      QT_TRANSLATE_NOOP("QObject", "packing state")},
 };
+static_assert(std::size(kAxisNames) == std::size(kStabilityAxes),
+              "a name row for every StabilityAxis, in its order");
 
 } // namespace
 
