@@ -138,7 +138,6 @@ TEST(VoidCells, RotatedRectangularLatticeGivesElongatedQuadrilaterals) {
     EXPECT_NEAR(upright.cells.at(0).direction, 0.5 * kPi, 1e-9);
 }
 
-/// A ring of n touching disks of diameter d around (0.5 L, 0.5 L) in an L x L cell.
 /// The summary a record takes (no shapes) is the full set's, bit for bit, with no cells kept.
 void expectSummaryOfFullSet(const ContactNetwork& net) {
     const LoadBearingGraph graph = loadBearingGraph(net);
@@ -166,6 +165,7 @@ void expectSummaryOfFullSet(const ContactNetwork& net) {
     EXPECT_EQ(m.voidCells.meanValence, full.meanValence);
 }
 
+/// A ring of n touching disks of diameter d around (0.5 L, 0.5 L) in an L x L cell.
 ContactNetwork ringNetwork(int n, double d, double L, int extra = 0) {
     ContactNetwork net = emptyNetwork(n + extra, {L, 0.0, 0.0, L});
     const double radius = 0.5 * d / std::sin(kPi / n);
