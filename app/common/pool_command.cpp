@@ -66,16 +66,19 @@ void printEmittedJobs(const std::string& command, std::size_t count, const std::
     fmt::print("{}\n", then);
 }
 
+int poolSlots(int jobsOption) {
+    return jobsOption > 0 ? jobsOption : processorCount();
+}
+
 PoolOutcome runPoolJobs(const std::vector<PoolJob>& jobs, const std::vector<std::string>& names,
                         int jobsOption, std::size_t doneBefore, std::size_t total,
                         const std::string& label, bool quiet) {
-    const int slots = jobsOption > 0 ? jobsOption : processorCount();
     stopRequested.store(false);
     auto previous = std::signal(SIGINT, onPoolInterrupt);
     auto previousTerm = std::signal(SIGTERM, onPoolInterrupt);
     ProgressBar bar(label);
     PoolOutcome outcome;
-    ProcessPool pool(slots, jobsOption > 0 ? 1 << 20 : processorCount());
+    ProcessPool pool(poolSlots(jobsOption), jobsOption > 0 ? 1 << 20 : processorCount());
     pool.run(
         jobs,
         [&](std::size_t job, const PoolResult& r) {

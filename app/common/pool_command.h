@@ -31,6 +31,9 @@ void preparePoolFolder(const PoolFolder& folder, const std::string& sourceText,
 void printEmittedJobs(const std::string& command, std::size_t count, const std::string& units,
                       const std::string& file, bool slurm, const std::string& then);
 
+/// The processes a pool runs at once for `--jobs` `jobsOption` (0: one a processor).
+int poolSlots(int jobsOption);
+
 /// The outcome of a pool run: interrupted (SIGINT or SIGTERM), and the jobs that failed
 /// otherwise ("<name> (exit N[, signal S]; log <file>)").
 struct PoolOutcome {

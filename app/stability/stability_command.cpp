@@ -253,7 +253,7 @@ int runStabilityCommand(const StabilityOptions& options) {
                         (dir / "logs" / (cells[i] + ".log")).string(), 1});
         jobNames.push_back(cells[i]);
     }
-    const int slots = options.jobs > 0 ? options.jobs : processorCount();
+    const int slots = poolSlots(options.jobs);
     if (!options.quiet) {
         fmt::print("grainlab stability {}: {} cells, {} done, at most {} at a time; folder {}\n",
                    map.name, cells.size(), doneBefore, slots, dir.string());

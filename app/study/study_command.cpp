@@ -131,7 +131,7 @@ int runStudyCommand(const StudyOptions& options) {
                         layout.logFile(plan.runs[i].id), threadsOf(plan.runs[i])});
         jobNames.push_back(plan.runs[i].id);
     }
-    const int slots = options.jobs > 0 ? options.jobs : processorCount();
+    const int slots = poolSlots(options.jobs);
     if (!options.quiet) {
         fmt::print("grainlab study {}: {} settings x {} seeds = {} runs, {} done, at most {} at "
                    "a time; folder {}\n",
